@@ -1,0 +1,103 @@
+/// @file
+/// `tailor detect MESH_T0 MESH_T1`: the self-collisions of one step.
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "command.hpp"
+#include "detection_options.hpp"
+#include "tailor/detection/brute_force.hpp"
+#include "tailor/detection/self_collision_detector.hpp"
+#include "tailor/geometry/error.hpp"
+#include "tailor/io/mesh_io.hpp"
+
+namespace tailor::cli {
+namespace {
+
+struct DetectArgs {
+  std::string mesh_t0, mesh_t1, json_path;
+  bool brute_force = false;
+  DetectionOptions detection;
+};
+
+nlohmann::json collisions_json(const CollisionSet& collisions) {
+  nlohmann::json vf = nlohmann::json::array(), ee = nlohmann::json::array();
+  for (const auto& c : collisions.vertex_face) vf.push_back({c.vertex, c.face, c.toi});
+  for (const auto& c : collisions.edge_edge) ee.push_back({c.a0, c.a1, c.b0, c.b1, c.toi});
+  return {{"vertex_face", vf}, {"edge_edge", ee}};
+}
+
+void print_stats(const DetectionStats& s) {
+  fmt::print("high level : {} node pairs visited, {} nodes culled by cones "
+             "({} contour tests, {} failed), {} CTPs\n",
+             s.node_pairs_visited, s.nodes_culled_by_cones, s.contour_tests,
+             s.contour_tests_failed, s.candidate_triangle_pairs);
+  fmt::print("isolated   : {} VF, {} EE pairs\n", s.isolated_vf_pairs, s.isolated_ee_pairs);
+  fmt::print("low level  :        {:>10} {:>10}\n", "VF", "EE");
+  fmt::print("  generated         {:>10} {:>10}\n", s.vf_generated, s.ee_generated);
+  fmt::print("  after boxes       {:>10} {:>10}\n", s.vf_after_boxes, s.ee_after_boxes);
+  fmt::print("  after filter      {:>10} {:>10}\n", s.vf_after_filter, s.ee_after_filter);
+  fmt::print("  exact CCD         {:>10} {:>10}  ({} decided by the exact path)\n", s.vf_tested,
+             s.ee_tested, s.ccd_exact_fallbacks);
+  fmt::print("  colliding         {:>10} {:>10}\n", s.vf_colliding, s.ee_colliding);
+  fmt::print("time (ms)  : refit {:.3f}, traversal {:.3f}, pair generation {:.3f}, "
+             "exact CCD {:.3f}, total {:.3f}\n",
+             s.refit_ms, s.traversal_ms, s.pair_generation_ms, s.ccd_ms, s.total_ms);
+}
+
+int run_detect(const DetectArgs& args) {
+  const MeshData t0 = read_mesh(args.mesh_t0);
+  const MeshData t1 = read_mesh(args.mesh_t1);
+  if (t0.vertices.rows() != t1.vertices.rows() || t0.faces != t1.faces) {
+    throw InputError(fmt::format("{} and {} do not have the same topology ({} vs {} vertices, "
+                                 "{} vs {} faces{})",
+                                 args.mesh_t0, args.mesh_t1, t0.vertices.rows(),
+                                 t1.vertices.rows(), t0.faces.rows(), t1.faces.rows(),
+                                 t0.faces.rows() == t1.faces.rows() ? ", different faces" : ""));
+  }
+  const TriangleMesh mesh(static_cast<Index>(t0.vertices.rows()), t0.faces);
+  fmt::print("mesh       : {} vertices, {} faces, {} edges\n", mesh.num_vertices(),
+             mesh.num_faces(), mesh.num_edges());
+
+  nlohmann::json out;
+  CollisionSet collisions;
+  if (args.brute_force) {
+    collisions = brute_force_self_collisions(mesh, t0.vertices, t1.vertices);
+    fmt::print("method     : brute force\n");
+  } else {
+    const DetectionConfig config = args.detection.config();
+    SelfCollisionDetector detector(mesh, t0.vertices, config);
+    DetectionResult result = detector.detect(t0.vertices, t1.vertices);
+    fmt::print("method     : {}\n", args.detection.method);
+    print_stats(result.stats);
+    out["stats"] = result.stats;
+    collisions = std::move(result.collisions);
+  }
+  fmt::print("collisions : {} vertex-face, {} edge-edge\n", collisions.vertex_face.size(),
+             collisions.edge_edge.size());
+  if (!args.json_path.empty()) {
+    out["collisions"] = collisions_json(collisions);
+    std::ofstream file(args.json_path);
+    if (!file) throw InputError(fmt::format("cannot write {}", args.json_path));
+    file << out.dump(1) << "\n";
+  }
+  return kSuccess;
+}
+
+const CommandRegistration registration{"detect", [](CLI::App& app) {
+  auto args = std::make_shared<DetectArgs>();
+  CLI::App* command = app.add_subcommand("detect", "Self-collisions of one step between two frames");
+  command->add_option("MESH_T0", args->mesh_t0, "Mesh at the start of the step (OBJ or PLY)")
+      ->required()->check(CLI::ExistingFile);
+  command->add_option("MESH_T1", args->mesh_t1, "Mesh at the end of the step (same topology)")
+      ->required()->check(CLI::ExistingFile);
+  command->add_flag("--brute-force", args->brute_force, "Test every feature pair (the oracle)");
+  command->add_option("--json", args->json_path, "Write collisions and statistics as JSON");
+  args->detection.add_to(*command);
+  return [args] { return run_detect(*args); };
+}};
+
+}  // namespace
+}  // namespace tailor::cli

@@ -1,0 +1,48 @@
+#pragma once
+/// @file
+/// Axis-aligned bounding boxes.
+
+#include <Eigen/Core>
+#include <initializer_list>
+#include <limits>
+
+#include "tailor/geometry/types.hpp"
+
+namespace tailor {
+
+/// An axis-aligned box; empty when min > max.
+struct Aabb {
+  Eigen::Array3d min = Eigen::Array3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Array3d max = Eigen::Array3d::Constant(-std::numeric_limits<double>::infinity());
+
+  /// Grows the box to hold point `p`.
+  void extend(const Vec3& p) {
+    min = min.min(p.array());
+    max = max.max(p.array());
+  }
+  /// Grows the box to hold box `b`.
+  void extend(const Aabb& b) {
+    min = min.min(b.min);
+    max = max.max(b.max);
+  }
+  /// Closed-box overlap: boxes that touch overlap (touching can be a contact).
+  bool overlaps(const Aabb& b) const {
+    return (min <= b.max).all() && (b.min <= max).all();
+  }
+  Vec3 center() const { return (0.5 * (min + max)).matrix(); }
+  Vec3 diagonal() const { return (max - min).matrix(); }
+};
+
+/// Box of the given vertices at t=0 and t=1: a primitive moving linearly stays inside it
+/// for the whole step.
+inline Aabb swept_box(const Positions& x0, const Positions& x1,
+                      std::initializer_list<Index> vertices) {
+  Aabb box;
+  for (Index v : vertices) {
+    box.extend(Vec3(x0.row(v)));
+    box.extend(Vec3(x1.row(v)));
+  }
+  return box;
+}
+
+}  // namespace tailor

@@ -1,0 +1,125 @@
+#pragma once
+/// @file
+/// A bounding volume hierarchy over primitives given by their boxes; flat arrays.
+
+#include <tbb/parallel_invoke.h>
+
+#include <span>
+#include <vector>
+
+#include "tailor/bvh/aabb.hpp"
+
+namespace tailor {
+
+/// Binary BVH with one primitive per leaf, stored in flat arrays. Nodes are numbered in
+/// depth-first pre-order from the root 0, so every child has a larger id than its parent
+/// and refitting in decreasing id order is bottom-up. The topology is built once; boxes
+/// are refitted as primitives move.
+class Bvh {
+ public:
+  Bvh() = default;
+  /// Builds the tree top-down (median split of box centres along the widest axis).
+  explicit Bvh(std::span<const Aabb> primitive_boxes);
+
+  Index num_nodes() const { return static_cast<Index>(m_left.size()); }
+  Index num_primitives() const { return static_cast<Index>(m_leaf_of_primitive.size()); }
+  bool empty() const { return m_left.empty(); }
+  bool is_leaf(Index node) const { return m_left[node] < 0; }
+  /// Children of an inner node.
+  Index left(Index node) const { return m_left[node]; }
+  Index right(Index node) const { return m_right[node]; }
+  /// Primitive of a leaf.
+  Index primitive(Index node) const { return m_right[node]; }
+  /// Leaf node holding primitive `p`.
+  Index leaf_of(Index p) const { return m_leaf_of_primitive[p]; }
+  /// Parent of a node (-1 for the root).
+  Index parent(Index node) const { return m_parent[node]; }
+  /// Primitives under a node: a contiguous range of primitive_order().
+  std::span<const Index> primitives_under(Index node) const {
+    return {m_primitive_order.data() + m_first[node], static_cast<std::size_t>(m_count[node])};
+  }
+  /// Primitive ids in leaf order.
+  const std::vector<Index>& primitive_order() const { return m_primitive_order; }
+
+  const Aabb& box(Index node) const { return m_boxes[node]; }
+  /// Sets every leaf box from `primitive_boxes` and refits inner nodes bottom-up (parallel).
+  void refit(std::span<const Aabb> primitive_boxes);
+
+  /// Calls `update(node)` for every node after both its children (bottom-up); disjoint
+  /// subtrees run in parallel, so `update` may only write data of `node` itself.
+  template <class Update>
+  void for_each_node_bottom_up(Update&& update) const {
+    if (!empty()) bottom_up_recursive(0, update);
+  }
+
+  /// Calls `visit(p, q)` for every pair of primitives `p` of this tree and `q` of `other`
+  /// whose boxes overlap (sequential, deterministic order).
+  template <class Visit>
+  void for_each_overlapping_pair(const Bvh& other, Visit&& visit) const;
+  /// Calls `visit(p, q)`, p != q, once per unordered pair of overlapping primitives.
+  template <class Visit>
+  void for_each_self_overlapping_pair(Visit&& visit) const;
+
+ private:
+  // Subtrees with fewer primitives than this are handled by one task.
+  static constexpr Index kParallelGrain = 2048;
+
+  template <class Update>
+  void bottom_up_recursive(Index node, Update& update) const {
+    if (!is_leaf(node)) {
+      if (m_count[node] > kParallelGrain) {
+        tbb::parallel_invoke([&] { bottom_up_recursive(m_left[node], update); },
+                             [&] { bottom_up_recursive(m_right[node], update); });
+      } else {
+        bottom_up_recursive(m_left[node], update);
+        bottom_up_recursive(m_right[node], update);
+      }
+    }
+    update(node);
+  }
+  template <class Visit>
+  void pair_recursive(Index a, const Bvh& other, Index b, Visit& visit) const;
+  template <class Visit>
+  void self_recursive(Index a, Visit& visit) const;
+
+  std::vector<Index> m_left, m_right, m_parent;  // leaf: left = -1, right = primitive
+  std::vector<Index> m_first, m_count;           // range in m_primitive_order
+  std::vector<Index> m_primitive_order, m_leaf_of_primitive;
+  std::vector<Aabb> m_boxes;
+};
+
+template <class Visit>
+void Bvh::for_each_overlapping_pair(const Bvh& other, Visit&& visit) const {
+  if (empty() || other.empty()) return;
+  pair_recursive(0, other, 0, visit);
+}
+
+template <class Visit>
+void Bvh::for_each_self_overlapping_pair(Visit&& visit) const {
+  if (!empty()) self_recursive(0, visit);
+}
+
+template <class Visit>
+void Bvh::pair_recursive(Index a, const Bvh& other, Index b, Visit& visit) const {
+  if (!m_boxes[a].overlaps(other.m_boxes[b])) return;
+  const bool a_leaf = is_leaf(a), b_leaf = other.is_leaf(b);
+  if (a_leaf && b_leaf) {
+    visit(primitive(a), other.primitive(b));
+  } else if (b_leaf || (!a_leaf && m_count[a] >= other.m_count[b])) {
+    pair_recursive(m_left[a], other, b, visit);
+    pair_recursive(m_right[a], other, b, visit);
+  } else {
+    pair_recursive(a, other, other.m_left[b], visit);
+    pair_recursive(a, other, other.m_right[b], visit);
+  }
+}
+
+template <class Visit>
+void Bvh::self_recursive(Index a, Visit& visit) const {
+  if (is_leaf(a)) return;
+  self_recursive(m_left[a], visit);
+  self_recursive(m_right[a], visit);
+  pair_recursive(m_left[a], *this, m_right[a], visit);
+}
+
+}  // namespace tailor

@@ -1,0 +1,357 @@
+#include "tailor/ccd/exact_polynomial.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <utility>
+
+namespace tailor::detail {
+
+namespace {
+
+int sign_of(const mpq_class& x) {
+  const int s = mpq_sgn(x.get_mpq_t());
+  return (s > 0) - (s < 0);
+}
+
+}  // namespace
+
+ExactPoly::ExactPoly(const mpq_class& c) : m_c{c} { trim(); }
+
+ExactPoly::ExactPoly(std::vector<mpq_class> coefficients) : m_c(std::move(coefficients)) {
+  trim();
+}
+
+ExactPoly ExactPoly::linear(const mpq_class& c0, const mpq_class& c1) {
+  return ExactPoly(std::vector<mpq_class>{c0, c1});
+}
+
+void ExactPoly::trim() {
+  while (!m_c.empty() && sign_of(m_c.back()) == 0) m_c.pop_back();
+}
+
+mpq_class ExactPoly::operator()(const mpq_class& t) const {
+  mpq_class r = 0;
+  for (std::size_t i = m_c.size(); i-- > 0;) r = r * t + m_c[i];
+  return r;
+}
+
+int ExactPoly::sign_at(const mpq_class& t) const { return sign_of((*this)(t)); }
+
+ExactPoly ExactPoly::derivative() const {
+  std::vector<mpq_class> d;
+  for (std::size_t i = 1; i < m_c.size(); ++i) d.push_back(m_c[i] * static_cast<long>(i));
+  return ExactPoly(std::move(d));
+}
+
+ExactPoly operator+(const ExactPoly& a, const ExactPoly& b) {
+  std::vector<mpq_class> c(std::max(a.m_c.size(), b.m_c.size()));
+  for (std::size_t i = 0; i < a.m_c.size(); ++i) c[i] += a.m_c[i];
+  for (std::size_t i = 0; i < b.m_c.size(); ++i) c[i] += b.m_c[i];
+  return ExactPoly(std::move(c));
+}
+
+ExactPoly operator-(const ExactPoly& a, const ExactPoly& b) {
+  std::vector<mpq_class> c(std::max(a.m_c.size(), b.m_c.size()));
+  for (std::size_t i = 0; i < a.m_c.size(); ++i) c[i] += a.m_c[i];
+  for (std::size_t i = 0; i < b.m_c.size(); ++i) c[i] -= b.m_c[i];
+  return ExactPoly(std::move(c));
+}
+
+ExactPoly operator*(const ExactPoly& a, const ExactPoly& b) {
+  if (a.is_zero() || b.is_zero()) return {};
+  std::vector<mpq_class> c(a.m_c.size() + b.m_c.size() - 1);
+  for (std::size_t i = 0; i < a.m_c.size(); ++i) {
+    for (std::size_t j = 0; j < b.m_c.size(); ++j) c[i + j] += a.m_c[i] * b.m_c[j];
+  }
+  return ExactPoly(std::move(c));
+}
+
+namespace {
+
+/// Long division: a = q b + r.
+void divide(const ExactPoly& a, const ExactPoly& b, ExactPoly* quotient, ExactPoly* remainder) {
+  assert(!b.is_zero());
+  std::vector<mpq_class> r = a.coefficients();
+  const auto& bc = b.coefficients();
+  const int db = b.degree();
+  std::vector<mpq_class> q(r.size() >= bc.size() ? r.size() - bc.size() + 1 : 0);
+  for (int i = static_cast<int>(r.size()) - 1; i >= db; --i) {
+    if (sign_of(r[i]) == 0) continue;
+    mpq_class f = r[i] / bc[db];
+    q[i - db] = f;
+    for (int j = 0; j <= db; ++j) r[i - db + j] -= f * bc[j];
+  }
+  if (quotient) *quotient = ExactPoly(std::move(q));
+  if (remainder) *remainder = ExactPoly(std::move(r));
+}
+
+ExactPoly monic(const ExactPoly& p) {
+  if (p.is_zero()) return p;
+  std::vector<mpq_class> c = p.coefficients();
+  const mpq_class lead = c.back();
+  for (auto& x : c) x /= lead;
+  return ExactPoly(std::move(c));
+}
+
+/// The Sturm sequence p, p', -rem(...), ... of squarefree p.
+std::vector<ExactPoly> sturm_sequence(const ExactPoly& p) {
+  std::vector<ExactPoly> s{p, p.derivative()};
+  while (!s.back().is_zero() && s.back().degree() > 0) {
+    ExactPoly r = poly_remainder(s[s.size() - 2], s.back());
+    if (r.is_zero()) break;
+    s.push_back(ExactPoly() - r);
+  }
+  if (s.back().is_zero()) s.pop_back();
+  return s;
+}
+
+int sign_variations(const std::vector<ExactPoly>& seq, const mpq_class& x) {
+  int count = 0, last = 0;
+  for (const auto& q : seq) {
+    const int s = q.sign_at(x);
+    if (s == 0) continue;
+    if (last != 0 && s != last) ++count;
+    last = s;
+  }
+  return count;
+}
+
+/// A split point of (lo, hi) that is not a root of q (q has finitely many roots).
+mpq_class split_point(const ExactPoly& q, const mpq_class& lo, const mpq_class& hi) {
+  const mpq_class w = hi - lo;
+  for (unsigned long denom = 2;; denom *= 2) {
+    for (unsigned long j = 1; j < denom; j += 2) {
+      mpq_class m = lo + w * mpq_class(mpz_class(j), mpz_class(denom));
+      if (q.sign_at(m) != 0) return m;
+    }
+  }
+}
+
+void isolate(const ExactPoly& q, const std::vector<ExactPoly>& sturm, const mpq_class& lo,
+             const mpq_class& hi, int vlo, int vhi, std::vector<RealRoot>& out) {
+  const int count = vlo - vhi;
+  if (count <= 0) return;
+  if (count == 1) {
+    out.push_back({lo, hi, false});
+    return;
+  }
+  const mpq_class m = split_point(q, lo, hi);
+  const int vm = sign_variations(sturm, m);
+  isolate(q, sturm, lo, m, vlo, vm, out);
+  isolate(q, sturm, m, hi, vm, vhi, out);
+}
+
+/// Bernstein coefficients of q on [lo, hi].
+std::vector<mpq_class> bernstein_on(const ExactPoly& q, const mpq_class& lo, const mpq_class& hi) {
+  std::vector<mpq_class> a = q.coefficients();
+  const int n = static_cast<int>(a.size()) - 1;
+  // Taylor shift to lo: a(t) -> a(lo + s).
+  for (int i = 0; i < n; ++i) {
+    for (int j = n - 1; j >= i; --j) a[j] += lo * a[j + 1];
+  }
+  // Scale s = w x.
+  const mpq_class w = hi - lo;
+  mpq_class wp = 1;
+  for (int i = 0; i <= n; ++i) {
+    a[i] *= wp;
+    wp *= w;
+  }
+  // Monomial to Bernstein: b_k = sum_{i<=k} C(k,i)/C(n,i) a_i.
+  std::vector<mpz_class> binom_n(n + 1);
+  for (int i = 0; i <= n; ++i) mpz_bin_uiui(binom_n[i].get_mpz_t(), n, i);
+  std::vector<mpq_class> b(n + 1);
+  for (int k = 0; k <= n; ++k) {
+    mpq_class s = 0;
+    for (int i = 0; i <= k; ++i) {
+      mpz_class bk;
+      mpz_bin_uiui(bk.get_mpz_t(), k, i);
+      mpq_class coeff(bk, binom_n[i]);
+      coeff.canonicalize();
+      s += coeff * a[i];
+    }
+    b[k] = s;
+  }
+  return b;
+}
+
+}  // namespace
+
+ExactPoly poly_remainder(const ExactPoly& a, const ExactPoly& b) {
+  ExactPoly r;
+  divide(a, b, nullptr, &r);
+  return r;
+}
+
+ExactPoly poly_quotient(const ExactPoly& a, const ExactPoly& b) {
+  ExactPoly q;
+  divide(a, b, &q, nullptr);
+  return q;
+}
+
+ExactPoly poly_gcd(const ExactPoly& a, const ExactPoly& b) {
+  ExactPoly x = a, y = b;
+  while (!y.is_zero()) {
+    ExactPoly r = poly_remainder(x, y);
+    x = std::move(y);
+    y = monic(r);
+  }
+  return monic(x);
+}
+
+ExactPoly squarefree_part(const ExactPoly& p) {
+  assert(!p.is_zero());
+  if (p.degree() <= 0) return p;
+  const ExactPoly g = poly_gcd(p, p.derivative());
+  if (g.degree() <= 0) return p;
+  return poly_quotient(p, g);
+}
+
+void refine_root(const ExactPoly& p, RealRoot& root) {
+  if (root.exact) return;
+  mpq_class m = (root.lo + root.hi) / 2;
+  const int sm = p.sign_at(m);
+  if (sm == 0) {
+    root.lo = m;
+    root.hi = m;
+    root.exact = true;
+  } else if (sm == p.sign_at(root.lo)) {
+    root.lo = m;
+  } else {
+    root.hi = m;
+  }
+}
+
+std::vector<RealRoot> isolate_roots_unit(const ExactPoly& p) {
+  std::vector<RealRoot> out;
+  if (p.degree() <= 0) return out;
+  const mpq_class zero = 0, one = 1;
+  ExactPoly q = p;
+  const bool root0 = p.sign_at(zero) == 0;
+  const bool root1 = p.sign_at(one) == 0;
+  if (root0) q = poly_quotient(q, ExactPoly::linear(0, 1));
+  if (root1) q = poly_quotient(q, ExactPoly::linear(-1, 1));
+  if (root0) out.push_back({zero, zero, true});
+  if (q.degree() >= 1) {
+    const auto sturm = sturm_sequence(q);
+    std::vector<RealRoot> inner;
+    isolate(q, sturm, zero, one, sign_variations(sturm, zero), sign_variations(sturm, one), inner);
+    for (auto& r : inner) {
+      // Keep open-interval endpoints away from roots of p at 0 and 1; q changes sign on
+      // the interval, so bisect with q.
+      while (!r.exact && ((root0 && r.lo == 0) || (root1 && r.hi == 1))) refine_root(q, r);
+      out.push_back(r);
+    }
+  }
+  if (root1) out.push_back({one, one, true});
+  return out;
+}
+
+int sign_at_root(const ExactPoly& p, RealRoot& root, const ExactPoly& q) {
+  if (root.exact) return q.sign_at(root.lo);
+  if (q.degree() <= 0) return q.is_zero() ? 0 : sign_of(q.coefficients()[0]);
+  auto constant_sign = [&]() {
+    const auto b = bernstein_on(q, root.lo, root.hi);
+    bool all_pos = true, all_neg = true;
+    for (const auto& x : b) {
+      all_pos &= sign_of(x) > 0;
+      all_neg &= sign_of(x) < 0;
+    }
+    return all_pos ? 1 : (all_neg ? -1 : 0);
+  };
+  // Cheap first: a few bisections usually leave q with one strict sign on the interval.
+  for (int i = 0; i < 4; ++i) {
+    if (const int s = constant_sign()) return s;
+    refine_root(p, root);
+    if (root.exact) return q.sign_at(root.lo);
+  }
+  const ExactPoly g = poly_gcd(p, q);
+  if (g.degree() >= 1 && g.sign_at(root.lo) * g.sign_at(root.hi) < 0) return 0;
+  // q(root) != 0: shrink the interval until q has one strict sign on all of it.
+  for (;;) {
+    const auto b = bernstein_on(q, root.lo, root.hi);
+    bool all_pos = true, all_neg = true;
+    for (const auto& x : b) {
+      all_pos &= sign_of(x) > 0;
+      all_neg &= sign_of(x) < 0;
+    }
+    if (all_pos) return 1;
+    if (all_neg) return -1;
+    refine_root(p, root);
+    if (root.exact) return q.sign_at(root.lo);
+  }
+}
+
+namespace {
+
+bool holds(int sign, bool strict) { return strict ? sign > 0 : sign >= 0; }
+
+mpq_class lower_bound(const ExactPoly& p, RealRoot root, const mpq_class& tolerance) {
+  while (!root.exact && root.hi - root.lo > tolerance) refine_root(p, root);
+  return root.lo;
+}
+
+}  // namespace
+
+std::optional<mpq_class> earliest_solution(const ExactPoly& p,
+                                           const std::vector<SignCondition>& conditions,
+                                           const mpq_class& tolerance) {
+  if (!p.is_zero()) {
+    if (p.degree() == 0) return std::nullopt;
+    const ExactPoly ps = squarefree_part(p);
+    auto roots = isolate_roots_unit(ps);
+    for (auto& r : roots) {
+      bool ok = true;
+      for (const auto& c : conditions) {
+        if (!holds(sign_at_root(ps, r, c.poly), c.strict)) {
+          ok = false;
+          break;
+        }
+      }
+      if (ok) return lower_bound(ps, r, tolerance);
+    }
+    return std::nullopt;
+  }
+
+  // p == 0: the conditions hold on a union of points and intervals whose ends are roots
+  // of the conditions or 0, 1. Sample every root and one point in every gap.
+  ExactPoly product(mpq_class(1));
+  for (const auto& c : conditions) {
+    if (c.poly.degree() <= 0) {
+      const int s = c.poly.is_zero() ? 0 : sign_of(c.poly.coefficients()[0]);
+      if (!holds(s, c.strict)) return std::nullopt;
+    } else {
+      product = product * c.poly;
+    }
+  }
+  if (product.degree() <= 0) return mpq_class(0);
+  const ExactPoly r = squarefree_part(product);
+  auto roots = isolate_roots_unit(r);
+  auto holds_at_point = [&](const mpq_class& t) {
+    for (const auto& c : conditions) {
+      if (!holds(c.poly.sign_at(t), c.strict)) return false;
+    }
+    return true;
+  };
+  auto holds_at_root = [&](RealRoot& root) {
+    for (const auto& c : conditions) {
+      if (!holds(sign_at_root(r, root, c.poly), c.strict)) return false;
+    }
+    return true;
+  };
+  const bool starts_at_root0 = !roots.empty() && roots.front().exact && roots.front().lo == 0;
+  // The gap [0, first root) (or all of [0, 1]) has the signs of t = 0.
+  if (!starts_at_root0 && holds_at_point(mpq_class(0))) return mpq_class(0);
+  for (std::size_t i = 0; i < roots.size(); ++i) {
+    if (holds_at_root(roots[i])) return lower_bound(r, roots[i], tolerance);
+    if (i + 1 < roots.size()) {
+      const mpq_class sample = (roots[i].hi + roots[i + 1].lo) / 2;
+      if (holds_at_point(sample)) return lower_bound(r, roots[i], tolerance);
+    } else if (!(roots[i].exact && roots[i].lo == 1)) {
+      // The last gap (root, 1] has the signs of t = 1.
+      if (holds_at_point(mpq_class(1))) return lower_bound(r, roots[i], tolerance);
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace tailor::detail

@@ -1,0 +1,87 @@
+#pragma once
+/// @file
+/// Exact univariate polynomials over the rationals (GMP) and the generic decision
+/// procedure of the exact CCD path: "the earliest t in [0, 1] with P(t) = 0 and sign
+/// conditions Q_i(t) >= 0 or > 0". Internal to the ccd module (and its tests).
+
+#include <gmpxx.h>
+
+#include <optional>
+#include <vector>
+
+namespace tailor::detail {
+
+/// A polynomial in t with rational coefficients, lowest degree first, no trailing zeros
+/// (the zero polynomial has no coefficients).
+class ExactPoly {
+ public:
+  ExactPoly() = default;
+  /// The constant polynomial `c`.
+  explicit ExactPoly(const mpq_class& c);
+  /// The polynomial with these coefficients (lowest degree first).
+  explicit ExactPoly(std::vector<mpq_class> coefficients);
+  /// The linear polynomial `c0 + c1 t`.
+  static ExactPoly linear(const mpq_class& c0, const mpq_class& c1);
+
+  /// Degree; -1 for the zero polynomial.
+  int degree() const { return static_cast<int>(m_c.size()) - 1; }
+  /// True for the zero polynomial.
+  bool is_zero() const { return m_c.empty(); }
+  /// Coefficients, lowest degree first.
+  const std::vector<mpq_class>& coefficients() const { return m_c; }
+  /// Value at `t`.
+  mpq_class operator()(const mpq_class& t) const;
+  /// Sign (-1, 0, 1) of the value at `t`.
+  int sign_at(const mpq_class& t) const;
+  /// Derivative.
+  ExactPoly derivative() const;
+
+  friend ExactPoly operator+(const ExactPoly& a, const ExactPoly& b);
+  friend ExactPoly operator-(const ExactPoly& a, const ExactPoly& b);
+  friend ExactPoly operator*(const ExactPoly& a, const ExactPoly& b);
+
+ private:
+  void trim();
+  std::vector<mpq_class> m_c;
+};
+
+/// Remainder of `a` divided by nonzero `b`.
+ExactPoly poly_remainder(const ExactPoly& a, const ExactPoly& b);
+/// Quotient of `a` divided by nonzero `b` (exact division assumed or not).
+ExactPoly poly_quotient(const ExactPoly& a, const ExactPoly& b);
+/// Monic greatest common divisor (zero when both are zero).
+ExactPoly poly_gcd(const ExactPoly& a, const ExactPoly& b);
+/// Squarefree part p / gcd(p, p') of a nonzero polynomial.
+ExactPoly squarefree_part(const ExactPoly& p);
+
+/// A real root of a squarefree polynomial: either exactly `lo` (== `hi`), or the only root
+/// in the open interval (lo, hi), whose endpoints are not roots (the sign changes).
+struct RealRoot {
+  mpq_class lo, hi;
+  bool exact = false;
+};
+
+/// The real roots in [0, 1] of squarefree nonzero `p`, sorted, with disjoint isolating
+/// intervals inside [0, 1].
+std::vector<RealRoot> isolate_roots_unit(const ExactPoly& p);
+
+/// Halves the isolating interval of `root` of squarefree `p` (it may become exact).
+void refine_root(const ExactPoly& p, RealRoot& root);
+
+/// Exact sign of `q` at `root` of squarefree `p` (refines the root as needed).
+int sign_at_root(const ExactPoly& p, RealRoot& root, const ExactPoly& q);
+
+/// One sign condition `poly > 0` (strict) or `poly >= 0`.
+struct SignCondition {
+  ExactPoly poly;
+  bool strict = false;
+};
+
+/// The infimum of {t in [0, 1] : p(t) = 0 and every condition holds} (p may be the zero
+/// polynomial), returned as a rational lower bound within `tolerance` of it; nullopt when
+/// the set is empty.
+std::optional<mpq_class> earliest_solution(const ExactPoly& p,
+                                           const std::vector<SignCondition>& conditions,
+                                           const mpq_class& tolerance);
+
+}  // namespace tailor::detail

@@ -1,0 +1,50 @@
+#pragma once
+/// @file
+/// High-level culling: BVH self- and pair-traversal producing candidate triangle pairs.
+
+#include <cstdint>
+#include <vector>
+
+#include "tailor/bvh/mesh_bvh.hpp"
+#include "tailor/candidates/primitive_pair.hpp"
+#include "tailor/culling/node_contours.hpp"
+#include "tailor/mesh/triangle_mesh.hpp"
+
+namespace tailor {
+
+/// Which high-level stages the traversal applies.
+struct TraversalOptions {
+  bool normal_cones = true;       ///< skip a node whose cone is under 90° (and contour passes)
+  bool contour_test = true;       ///< require the contour test before a cone skips a node
+  bool adjacency_culling = true;  ///< never emit triangle pairs that share a vertex
+};
+
+/// Counts of one traversal.
+struct TraversalCounts {
+  std::int64_t node_pairs_visited = 0;
+  std::int64_t nodes_culled_by_cones = 0;
+  std::int64_t contour_tests = 0;
+  std::int64_t contour_tests_failed = 0;
+  TraversalCounts& operator+=(const TraversalCounts& other);
+};
+
+/// The positions of one step, as the traversal sees them.
+struct StepPositions {
+  const Positions& x0;
+  const Positions& x1;
+};
+
+/// Appends to `pairs` every CTP inside one BVH: self(node) = self(left) + self(right) +
+/// pair(left, right), skipping nodes certified by normal cones and the contour test.
+/// `contours` must belong to `bvh` (used only when the contour test is on). Parallel;
+/// the set of pairs and the counts do not depend on the thread count, their order does.
+void self_traversal(const TriangleMesh& mesh, const MeshBvh& bvh, const NodeContours& contours,
+                    StepPositions step, const TraversalOptions& options,
+                    std::vector<TrianglePair>& pairs, TraversalCounts& counts);
+
+/// Appends to `pairs` every CTP between two BVHs over disjoint face sets.
+void pair_traversal(const TriangleMesh& mesh, const MeshBvh& a, const MeshBvh& b,
+                    const TraversalOptions& options, std::vector<TrianglePair>& pairs,
+                    TraversalCounts& counts);
+
+}  // namespace tailor

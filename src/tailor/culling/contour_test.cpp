@@ -1,0 +1,120 @@
+#include "tailor/culling/contour_test.hpp"
+
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <vector>
+
+namespace tailor {
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// A vector that moves linearly over the step: value at t=0 and t=1.
+struct Moving {
+  Vec3 v0, v1;
+  double magnitude() const { return v0.norm() + v1.norm(); }
+};
+
+// Sign of a quadratic given by Bernstein coefficients c, each known to within `bound`:
+// +1 / -1 when all three are certainly of that strict sign, 0 otherwise.
+int certain_sign(const std::array<double, 3>& c, double bound) {
+  if (c[0] > bound && c[1] > bound && c[2] > bound) return 1;
+  if (c[0] < -bound && c[1] < -bound && c[2] < -bound) return -1;
+  return 0;
+}
+
+// Bernstein coefficients of a·(u(t)×v(t)): the 2D orientation in the projection.
+int orientation_sign(const Moving& u, const Moving& v, const Vec3& a) {
+  const std::array<double, 3> c{a.dot(u.v0.cross(v.v0)),
+                                0.5 * a.dot(u.v0.cross(v.v1) + u.v1.cross(v.v0)),
+                                a.dot(u.v1.cross(v.v1))};
+  return certain_sign(c, 32 * kEps * u.magnitude() * v.magnitude() * a.norm());
+}
+
+// Sign of |a|² (u⊥·v⊥) = (u·v)|a|² - (u·a)(v·a), the projected dot product.
+int projected_dot_sign(const Moving& u, const Moving& v, const Vec3& a) {
+  const double aa = a.squaredNorm();
+  const double ua0 = u.v0.dot(a), ua1 = u.v1.dot(a), va0 = v.v0.dot(a), va1 = v.v1.dot(a);
+  const std::array<double, 3> c{
+      u.v0.dot(v.v0) * aa - ua0 * va0,
+      0.5 * ((u.v0.dot(v.v1) + u.v1.dot(v.v0)) * aa - ua0 * va1 - ua1 * va0),
+      u.v1.dot(v.v1) * aa - ua1 * va1};
+  return certain_sign(c, 32 * kEps * u.magnitude() * v.magnitude() * aa);
+}
+
+Moving difference(const Positions& x0, const Positions& x1, Index from, Index to) {
+  return {x0.row(to) - x0.row(from), x1.row(to) - x1.row(from)};
+}
+
+// Segments pq and rs certainly disjoint at every t: r and s strictly on one side of pq
+// throughout, or p and q strictly on one side of rs throughout.
+bool certainly_disjoint(const Positions& x0, const Positions& x1, Index p, Index q, Index r,
+                        Index s, const Vec3& a) {
+  const Moving pq = difference(x0, x1, p, q), rs = difference(x0, x1, r, s);
+  const int side_r = orientation_sign(pq, difference(x0, x1, p, r), a);
+  if (side_r != 0 && side_r == orientation_sign(pq, difference(x0, x1, p, s), a)) return true;
+  const int side_p = orientation_sign(rs, difference(x0, x1, r, p), a);
+  return side_p != 0 && side_p == orientation_sign(rs, difference(x0, x1, r, q), a);
+}
+
+struct Box2 {
+  double min_x, max_x, min_y, max_y;
+  Index edge;
+};
+
+}  // namespace
+
+bool contour_stays_simple(std::span<const Index> loop, const Positions& x0, const Positions& x1,
+                          const Vec3& axis) {
+  const Index m = static_cast<Index>(loop.size());
+  if (m < 3) return false;
+  auto at = [&](Index i) { return loop[static_cast<std::size_t>((i % m + m) % m)]; };
+
+  // Consecutive edges meet only at their shared vertex: they never fold back onto each
+  // other (projected dot stays positive) or they turn strictly one way throughout.
+  for (Index i = 0; i < m; ++i) {
+    const Moving u = difference(x0, x1, at(i - 1), at(i));
+    const Moving v = difference(x0, x1, at(i), at(i + 1));
+    if (projected_dot_sign(u, v, axis) <= 0 && orientation_sign(u, v, axis) == 0) return false;
+  }
+  if (m == 3) return true;  // a triangle has no non-adjacent edge pair
+
+  // Non-adjacent edges: prune with swept boxes in a plane normal to the axis, then
+  // certify each remaining pair. The boxes are only a filter, padded for the rounding
+  // of the approximate basis; the certificate uses the axis itself.
+  const Vec3 e1 = axis.unitOrthogonal();
+  const Vec3 e2 = axis.normalized().cross(e1);
+  const Vec3 origin = x0.row(loop[0]);
+  std::vector<Box2> boxes(static_cast<std::size_t>(m));
+  double extent = 0;
+  for (Index i = 0; i < m; ++i) {
+    Box2 box{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+             std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), i};
+    for (Index vertex : {at(i), at(i + 1)}) {
+      for (const Positions* x : {&x0, &x1}) {
+        const Vec3 d = Vec3(x->row(vertex)) - origin;
+        const double px = d.dot(e1), py = d.dot(e2);
+        box.min_x = std::min(box.min_x, px), box.max_x = std::max(box.max_x, px);
+        box.min_y = std::min(box.min_y, py), box.max_y = std::max(box.max_y, py);
+        extent = std::max(extent, d.norm());
+      }
+    }
+    boxes[static_cast<std::size_t>(i)] = box;
+  }
+  const double pad = 1e-9 * extent;
+  std::sort(boxes.begin(), boxes.end(),
+            [](const Box2& a, const Box2& b) { return a.min_x < b.min_x; });
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    for (std::size_t j = i + 1; j < boxes.size() && boxes[j].min_x <= boxes[i].max_x + pad; ++j) {
+      if (boxes[j].min_y > boxes[i].max_y + pad || boxes[i].min_y > boxes[j].max_y + pad) continue;
+      const Index a = boxes[i].edge, b = boxes[j].edge;
+      const Index gap = std::abs(a - b);
+      if (gap == 1 || gap == m - 1) continue;  // adjacent: checked above
+      if (!certainly_disjoint(x0, x1, at(a), at(a + 1), at(b), at(b + 1), axis)) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace tailor

@@ -1,0 +1,102 @@
+#include "tailor/culling/node_contours.hpp"
+
+#include <algorithm>
+
+namespace tailor {
+namespace {
+
+// A boundary half-edge of a patch, directed by its face's orientation.
+struct HalfEdge {
+  Index edge, from, to;
+};
+
+struct ContourBuilder {
+  const TriangleMesh& mesh;
+  const MeshBvh& bvh;
+  std::vector<std::int64_t>& offsets;
+  std::vector<Index>& lengths;
+  std::vector<Index>& vertices;
+
+  // Returns the node's boundary half-edges sorted by edge id; `valid` turns false when
+  // the patch is not edge-manifold or not consistently oriented.
+  std::vector<HalfEdge> build(Index node, bool& valid) {
+    const Bvh& tree = bvh.tree();
+    std::vector<HalfEdge> boundary;
+    if (tree.is_leaf(node)) {
+      const Index f = bvh.face(tree.primitive(node));
+      const auto edges = mesh.face_edges(f);
+      for (int i = 0; i < 3; ++i) {
+        if (mesh.edge_faces(edges[i]).size() > 2) valid = false;  // non-manifold edge
+        boundary.push_back({edges[i], mesh.faces()(f, i), mesh.faces()(f, (i + 1) % 3)});
+      }
+      std::sort(boundary.begin(), boundary.end(),
+                [](const HalfEdge& a, const HalfEdge& b) { return a.edge < b.edge; });
+    } else {
+      bool left_valid = true, right_valid = true;
+      std::vector<HalfEdge> left = build(tree.left(node), left_valid);
+      std::vector<HalfEdge> right = build(tree.right(node), right_valid);
+      valid = left_valid && right_valid;
+      boundary.reserve(left.size() + right.size());
+      // Merge; an edge on both sides is interior now, and must be traversed in opposite
+      // directions by its two faces (consistent orientation).
+      std::size_t i = 0, j = 0;
+      while (i < left.size() || j < right.size()) {
+        if (j == right.size() || (i < left.size() && left[i].edge < right[j].edge)) {
+          boundary.push_back(left[i++]);
+        } else if (i == left.size() || right[j].edge < left[i].edge) {
+          boundary.push_back(right[j++]);
+        } else {
+          if (left[i].from != right[j].to) valid = false;
+          ++i, ++j;
+        }
+      }
+    }
+    // Leaves are never tested (a triangle cannot touch itself): no loop stored.
+    offsets[node] = static_cast<std::int64_t>(vertices.size());
+    if (!tree.is_leaf(node) && valid) record_loop(node, boundary);
+    return boundary;
+  }
+
+  // Stores the loop if the half-edges form exactly one cycle visiting each vertex once.
+  void record_loop(Index node, std::vector<HalfEdge> half_edges) {
+    if (half_edges.size() < 3) return;
+    std::sort(half_edges.begin(), half_edges.end(),
+              [](const HalfEdge& a, const HalfEdge& b) { return a.from < b.from; });
+    for (std::size_t k = 1; k < half_edges.size(); ++k) {
+      if (half_edges[k].from == half_edges[k - 1].from) return;  // vertex visited twice
+    }
+    auto next = [&](Index v) -> Index {
+      auto it = std::lower_bound(half_edges.begin(), half_edges.end(), v,
+                                 [](const HalfEdge& h, Index x) { return h.from < x; });
+      return (it == half_edges.end() || it->from != v) ? -1 : it->to;
+    };
+    const Index start = half_edges.front().from;
+    Index v = start;
+    std::size_t steps = 0;
+    do {
+      vertices.push_back(v);
+      v = next(v);
+      ++steps;
+    } while (v >= 0 && v != start && steps <= half_edges.size());
+    if (v != start || steps != half_edges.size()) {
+      vertices.resize(static_cast<std::size_t>(offsets[node]));  // open chain or several loops
+      return;
+    }
+    lengths[node] = static_cast<Index>(steps);
+  }
+};
+
+}  // namespace
+
+NodeContours::NodeContours(const TriangleMesh& mesh, const MeshBvh& bvh) {
+  const Index n = bvh.tree().num_nodes();
+  m_loop_offset.assign(n, 0);
+  m_loop_length.assign(n, 0);
+  if (n == 0) return;
+  ContourBuilder builder{mesh, bvh, m_loop_offset, m_loop_length, m_loop_vertices};
+  bool valid = true;
+  builder.build(0, valid);
+  m_loop_vertices.shrink_to_fit();
+}
+
+}  // namespace tailor

@@ -1,0 +1,40 @@
+#pragma once
+/// @file
+/// Boundary contours of BVH nodes, precomputed once from topology for the contour test.
+
+#include <span>
+#include <vector>
+
+#include "tailor/bvh/mesh_bvh.hpp"
+#include "tailor/mesh/triangle_mesh.hpp"
+
+namespace tailor {
+
+/// For every node of a MeshBvh: whether its faces can be certified by the normal-cone
+/// theorem at all (edge-manifold, consistently oriented, exactly one boundary loop), and
+/// that loop. A patch whose normals all lie within 90° of an axis is immersed in the
+/// plane by the projection along that axis; with one simple boundary loop the immersion
+/// is injective, so the patch cannot touch itself. Several loops (an annulus, two
+/// pieces) or none (a closed surface) never certify.
+class NodeContours {
+ public:
+  NodeContours() = default;
+  NodeContours(const TriangleMesh& mesh, const MeshBvh& bvh);
+
+  /// True when the node's faces have exactly one consistently oriented boundary loop.
+  bool has_single_loop(Index node) const { return m_loop_length[node] > 0; }
+  /// Vertices of the node's boundary loop in walking order (empty if none).
+  std::span<const Index> loop(Index node) const {
+    return {m_loop_vertices.data() + m_loop_offset[node],
+            static_cast<std::size_t>(m_loop_length[node])};
+  }
+  /// Total number of stored loop vertices (memory use).
+  std::size_t stored_vertices() const { return m_loop_vertices.size(); }
+
+ private:
+  std::vector<std::int64_t> m_loop_offset;
+  std::vector<Index> m_loop_length;
+  std::vector<Index> m_loop_vertices;
+};
+
+}  // namespace tailor

@@ -1,0 +1,46 @@
+#pragma once
+/// @file
+/// The self-collision pipeline of one time step (DESIGN.md §1): refit, high-level
+/// culling, low-level culling, exact CCD.
+
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "tailor/detection/collision.hpp"
+#include "tailor/detection/detection_config.hpp"
+#include "tailor/detection/detection_stats.hpp"
+#include "tailor/mesh/triangle_mesh.hpp"
+
+namespace tailor {
+
+/// Result of one step: the exact collisions and per-stage statistics.
+struct DetectionResult {
+  CollisionSet collisions;
+  DetectionStats stats;
+};
+
+/// Finds every self-collision of a deforming mesh over one linear step.
+/// Built once per topology; `detect` may be called for any number of steps.
+class SelfCollisionDetector {
+ public:
+  /// `x_build` positions the BVH is built on (usually the first frame).
+  SelfCollisionDetector(const TriangleMesh& mesh, const Positions& x_build,
+                        DetectionConfig config = DetectionConfig::preset("paper"));
+  ~SelfCollisionDetector();
+  SelfCollisionDetector(SelfCollisionDetector&&) noexcept;
+  SelfCollisionDetector& operator=(SelfCollisionDetector&&) noexcept;
+
+  /// All VF and EE pairs that touch at some t in [0, 1] while vertices move from `x0`
+  /// to `x1`. Throws InputError if the row counts differ from the mesh's.
+  DetectionResult detect(const Positions& x0, const Positions& x1);
+
+  const DetectionConfig& config() const;
+  const TriangleMesh& mesh() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> m_impl;
+};
+
+}  // namespace tailor

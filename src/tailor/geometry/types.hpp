@@ -1,0 +1,26 @@
+#pragma once
+/// @file
+/// Basic numeric types shared by every module.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products everywhere
+#include <cstdint>
+
+namespace tailor {
+
+/// Index of a vertex, edge or face.
+using Index = std::int32_t;
+
+/// A 3D point or vector.
+using Vec3 = Eigen::Vector3d;
+
+/// Vertex positions, one row per vertex (DESIGN.md §6).
+using Positions = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
+/// Triangle faces, one row of three vertex indices per face.
+using FaceArray = Eigen::Matrix<Index, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
+/// Edges, one row of two vertex indices per edge.
+using EdgeArray = Eigen::Matrix<Index, Eigen::Dynamic, 2, Eigen::RowMajor>;
+
+}  // namespace tailor

@@ -1,0 +1,27 @@
+#pragma once
+/// @file
+/// Wavefront OBJ reading and writing (positions and triangle faces only).
+
+#include <filesystem>
+
+#include "tailor/geometry/types.hpp"
+#include "tailor/io/mesh_data.hpp"
+
+namespace tailor {
+
+/// Reads an OBJ file: `v x y z` (extra values such as w or colours ignored) and `f`
+/// entries in any of the forms `i`, `i/j`, `i//k`, `i/j/k`, with 1-based or negative
+/// (relative) indices. Normals, texture coordinates, groups, materials and comments are
+/// ignored. Polygons with more than three vertices are split into triangle fans (one
+/// warning per file). Throws InputError naming the file, the line and the problem
+/// (missing file, garbage token, non-finite coordinate, index out of range, face with
+/// fewer than three vertices or a repeated vertex, unknown statement).
+MeshData read_obj(const std::filesystem::path& path);
+
+/// Writes `v` lines with round-trip precision (17 significant digits) and 1-based `f`
+/// lines. Throws InputError if the file cannot be written, a coordinate is not finite
+/// or a face index is out of range.
+void write_obj(const std::filesystem::path& path, const Positions& vertices,
+               const FaceArray& faces);
+
+}  // namespace tailor

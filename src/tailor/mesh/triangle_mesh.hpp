@@ -1,0 +1,90 @@
+#pragma once
+/// @file
+/// Connectivity of a triangle mesh: edges, adjacency (flat CSR arrays), boundary, components.
+
+#include <array>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tailor/geometry/types.hpp"
+
+namespace tailor {
+
+/// What validation found in a mesh's connectivity. Errors make the constructor throw;
+/// the rest are warnings (real garments are often non-manifold).
+struct MeshValidation {
+  std::vector<Index> non_manifold_edges;   ///< edges with more than two incident faces
+  std::vector<Index> unreferenced_vertices;  ///< vertices used by no face
+  /// True when every edge has one or two faces and every vertex is used.
+  bool is_manifold() const { return non_manifold_edges.empty(); }
+};
+
+/// Fixed connectivity of a triangle mesh, built once from its faces.
+///
+/// Edges are the unique undirected edges `(a, b)` with `a < b`, ordered by `b`, then by
+/// `a` (the order of the reference data in ../shared/data). All adjacency is stored as
+/// flat CSR arrays.
+class TriangleMesh {
+ public:
+  /// Builds the connectivity. Throws InputError on an out-of-range index or a face that
+  /// repeats a vertex; non-manifold edges and unreferenced vertices are only reported
+  /// in validation().
+  TriangleMesh(Index num_vertices, FaceArray faces);
+
+  Index num_vertices() const { return m_num_vertices; }
+  Index num_faces() const { return static_cast<Index>(m_faces.rows()); }
+  Index num_edges() const { return static_cast<Index>(m_edges.rows()); }
+
+  /// Faces as given, one row of three vertex ids per face.
+  const FaceArray& faces() const { return m_faces; }
+  /// Unique edges `(a, b)`, `a < b`, sorted by `(b, a)`.
+  const EdgeArray& edges() const { return m_edges; }
+
+  /// The three edges of face `f`: entry `i` joins `faces(f, i)` and `faces(f, (i+1)%3)`.
+  std::array<Index, 3> face_edges(Index f) const {
+    return {m_face_edges[3 * f], m_face_edges[3 * f + 1], m_face_edges[3 * f + 2]};
+  }
+  /// Faces incident to edge `e` (one for a boundary edge, two inside, more if non-manifold).
+  std::span<const Index> edge_faces(Index e) const;
+  /// Faces incident to vertex `v`, in increasing order.
+  std::span<const Index> vertex_faces(Index v) const;
+  /// Edges incident to vertex `v`, in increasing order.
+  std::span<const Index> vertex_edges(Index v) const;
+
+  /// Id of edge `(a, b)` (either order), or -1 if there is none.
+  Index find_edge(Index a, Index b) const;
+
+  /// True when edge `e` has exactly one incident face.
+  bool is_boundary_edge(Index e) const { return edge_faces(e).size() == 1; }
+  /// Number of boundary loops.
+  Index num_boundary_loops() const { return static_cast<Index>(m_loop_offsets.size()) - 1; }
+  /// Vertices of boundary loop `i`, in walking order (first vertex not repeated).
+  std::span<const Index> boundary_loop(Index i) const;
+
+  /// Number of connected components (by shared vertices; isolated vertices not counted).
+  Index num_components() const { return m_num_components; }
+  /// Component id of each face.
+  const std::vector<Index>& face_components() const { return m_face_component; }
+
+  /// True when faces `f` and `g` share at least one vertex (`f == g` included).
+  bool faces_share_vertex(Index f, Index g) const;
+
+  /// Warnings found while building.
+  const MeshValidation& validation() const { return m_validation; }
+
+ private:
+  Index m_num_vertices = 0;
+  FaceArray m_faces;
+  EdgeArray m_edges;
+  std::vector<Index> m_face_edges;  // 3 per face
+  std::vector<Index> m_edge_face_offsets, m_edge_face_ids;
+  std::vector<Index> m_vertex_face_offsets, m_vertex_face_ids;
+  std::vector<Index> m_vertex_edge_offsets, m_vertex_edge_ids;
+  std::vector<Index> m_loop_offsets{0}, m_loop_vertices;
+  std::vector<Index> m_face_component;
+  Index m_num_components = 0;
+  MeshValidation m_validation;
+};
+
+}  // namespace tailor

@@ -1,0 +1,51 @@
+#pragma once
+/// @file
+/// The sleeve: an open tube around the arm, `rings × segments` vertices.
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "tailor/geometry/types.hpp"
+#include "tailor/mesh/triangle_mesh.hpp"
+#include "tailor/scene/arm.hpp"
+
+namespace tailor {
+
+/// Size and resolution of the sleeve.
+struct SleeveParams {
+  int rings = 21;        ///< vertex loops along the arm (≥ 2)
+  int segments = 33;     ///< vertices around each ring (≥ 3)
+  double slack = 0.03;   ///< radius beyond the arm's (m)
+  double start = 0.02;   ///< rest-pose abscissa of the shoulder end (m from the shoulder joint)
+  double length = 0.50;  ///< along the arm (m)
+};
+
+/// An open tube. Vertex `r * segments + j` is vertex `j` of ring `r`; ring 0 is the
+/// shoulder end (pinned to the arm), ring `rings - 1` the wrist end. Faces are oriented
+/// with outward normals.
+struct Sleeve {
+  SleeveParams params;
+  Positions rest;                       ///< rest (and initial) positions
+  std::shared_ptr<TriangleMesh> mesh;   ///< fixed connectivity
+  Index elbow_ring = 0;                 ///< ring nearest to the elbow in the rest pose
+
+  Index num_rings() const { return params.rings; }
+  Index num_segments() const { return params.segments; }
+  /// Vertex ids of ring `r`, in order around the arm.
+  std::vector<Index> ring(Index r) const;
+  /// Every ring's vertex ids (the section loops).
+  std::vector<std::vector<Index>> rings() const;
+  /// The two open ends: {shoulder ring, wrist ring}.
+  std::array<Index, 2> open_end_rings() const { return {0, params.rings - 1}; }
+  /// Vertices attached to the arm (the shoulder ring).
+  std::vector<Index> pinned_vertices() const { return ring(0); }
+  /// Per-face warp direction (along the arm) for the cloth model's anisotropic membrane.
+  Positions warp_directions() const;
+};
+
+/// Generates the sleeve around `arm` in its rest pose, in time linear in the vertex count.
+/// Throws InputError on a bad size or resolution, or a sleeve that leaves the arm.
+Sleeve make_sleeve(const Arm& arm, const SleeveParams& params);
+
+}  // namespace tailor

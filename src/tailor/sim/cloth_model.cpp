@@ -1,0 +1,442 @@
+/// @file
+/// Implicit cloth: element energies, a fixed-pattern sparse system, LDLT or CG.
+
+#include "tailor/sim/cloth_model.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "tailor/geometry/error.hpp"
+
+namespace tailor {
+namespace {
+
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+using Mat3 = Eigen::Matrix3d;
+
+/// Rest data of one face: area and the coefficients giving w_u, w_v from its vertices.
+struct FaceRest {
+  double area = 0;
+  std::array<double, 3> cu{}, cv{};
+};
+
+/// One bending hinge: edge (a, b), opposite c (first face) and d (second face).
+struct Hinge {
+  std::array<Index, 4> v{};  // a, b, c, d
+  double weight = 0;         // 3 |e|² / (A1 + A2) at rest
+  double rest_angle = 0;
+};
+
+double wrap_angle(double a) {
+  while (a > std::numbers::pi) a -= 2 * std::numbers::pi;
+  while (a <= -std::numbers::pi) a += 2 * std::numbers::pi;
+  return a;
+}
+
+Vec3 row3(const Positions& x, Index i) { return x.row(i).transpose(); }
+
+}  // namespace
+
+double dihedral_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
+                      Eigen::Matrix<double, 12, 1>* gradient) {
+  const Vec3 e = b - a;
+  const Vec3 n1 = (c - a).cross(c - b);
+  const Vec3 n2 = (d - b).cross(d - a);
+  const double el = e.norm();
+  const double l1 = n1.squaredNorm(), l2 = n2.squaredNorm();
+  if (el <= 0 || l1 <= 0 || l2 <= 0) {
+    if (gradient != nullptr) gradient->setZero();
+    return 0;
+  }
+  const Vec3 u1 = n1 / std::sqrt(l1), u2 = n2 / std::sqrt(l2);
+  const double angle = std::atan2(u2.cross(u1).dot(e / el), u1.dot(u2));
+  if (gradient != nullptr) {
+    // Bridson, Marino & Fedkiw 2003: the bending mode is the angle's gradient.
+    const Vec3 g1 = n1 / l1, g2 = n2 / l2;
+    gradient->segment<3>(0) = ((c - b).dot(e) / el) * g1 + ((d - b).dot(e) / el) * g2;
+    gradient->segment<3>(3) = -((c - a).dot(e) / el) * g1 - ((d - a).dot(e) / el) * g2;
+    gradient->segment<3>(6) = el * g1;
+    gradient->segment<3>(9) = el * g2;
+  }
+  return angle;
+}
+
+struct ClothModel::Impl {
+  ClothMaterial material;
+  Index nv = 0;
+  FaceArray faces;
+  std::vector<FaceRest> face_rest;
+  std::vector<Hinge> hinges;
+  Eigen::VectorXd masses;
+  std::vector<Index> pinned;
+  std::vector<char> is_pinned;
+
+  SparseMatrix pattern;               // K's pattern (full symmetric, 3x3 blocks)
+  std::vector<int> diagonal_index;    // value index of entry (k, k)
+  std::vector<int> pinned_zero_index; // entries in pinned rows or columns (diagonal excluded)
+  bool pinned_dirty = true;
+
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
+  bool ldlt_analyzed = false;
+  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper,
+                           Eigen::DiagonalPreconditioner<double>> cg;
+  Eigen::VectorXd last_dv;
+  ClothSolver solver = ClothSolver::automatic;
+  double cg_tolerance = 1e-6;
+
+  /// Offset of block row I inside block column J (identical in its three columns).
+  int block_offset(Index I, Index J) const {
+    const int* outer = pattern.outerIndexPtr();
+    const int* inner = pattern.innerIndexPtr();
+    const int col = 3 * J;
+    const int* begin = inner + outer[col];
+    const int* end = inner + outer[col + 1];
+    const int* it = std::lower_bound(begin, end, 3 * I);
+    return static_cast<int>(it - begin);
+  }
+
+  void add_block(double* values, Index I, Index J, const Mat3& block) const {
+    const int k = block_offset(I, J);
+    const int* outer = pattern.outerIndexPtr();
+    for (int b = 0; b < 3; ++b) {
+      double* col = values + outer[3 * J + b] + k;
+      for (int a = 0; a < 3; ++a) col[a] += block(a, b);
+    }
+  }
+
+  /// Elastic energy; adds forces to `f` and the PSD stiffness to `k_values` when given.
+  double evaluate(const Positions& x, Positions* f, double* k_values) const {
+    double energy = 0;
+    const double ks = material.stretch_stiffness, ksh = material.shear_stiffness;
+    for (Index t = 0; t < static_cast<Index>(faces.rows()); ++t) {
+      const FaceRest& r = face_rest[static_cast<std::size_t>(t)];
+      const std::array<Index, 3> vid{faces(t, 0), faces(t, 1), faces(t, 2)};
+      Vec3 wu = Vec3::Zero(), wv = Vec3::Zero();
+      for (int i = 0; i < 3; ++i) {
+        const Vec3 p = row3(x, vid[i]);
+        wu += r.cu[i] * p;
+        wv += r.cv[i] * p;
+      }
+      const double lu = wu.norm(), lv = wv.norm();
+      const double cu = lu - 1, cv = lv - 1, s = wu.dot(wv);
+      energy += r.area * (0.5 * ks * (cu * cu + cv * cv) + 0.5 * ksh * s * s);
+      const Vec3 hu = lu > 0 ? Vec3(wu / lu) : Vec3::Zero();
+      const Vec3 hv = lv > 0 ? Vec3(wv / lv) : Vec3::Zero();
+      std::array<Vec3, 3> g;  // shear gradient per vertex
+      for (int i = 0; i < 3; ++i) g[i] = r.cu[i] * wv + r.cv[i] * wu;
+      if (f != nullptr) {
+        for (int i = 0; i < 3; ++i) {
+          const Vec3 grad = r.area * (ks * (cu * r.cu[i] * hu + cv * r.cv[i] * hv) + ksh * s * g[i]);
+          f->row(vid[i]) -= grad.transpose();
+        }
+      }
+      if (k_values != nullptr) {
+        // Stretch: the Hessian's positive part along and (when stretched) across the fibre.
+        const Mat3 I3 = Mat3::Identity();
+        const Mat3 pu = hu * hu.transpose() + std::max(0.0, lu > 0 ? 1 - 1 / lu : 0.0) * (I3 - hu * hu.transpose());
+        const Mat3 pv = hv * hv.transpose() + std::max(0.0, lv > 0 ? 1 - 1 / lv : 0.0) * (I3 - hv * hv.transpose());
+        for (int i = 0; i < 3; ++i) {
+          for (int j = 0; j < 3; ++j) {
+            const Mat3 block = r.area * (ks * (r.cu[i] * r.cu[j] * pu + r.cv[i] * r.cv[j] * pv) +
+                                         ksh * g[i] * g[j].transpose());
+            add_block(k_values, vid[i], vid[j], block);
+          }
+        }
+      }
+    }
+    const double kb = material.bending_stiffness;
+    if (kb > 0) {
+      Eigen::Matrix<double, 12, 1> grad;
+      for (const Hinge& h : hinges) {
+        const double angle = dihedral_angle(row3(x, h.v[0]), row3(x, h.v[1]), row3(x, h.v[2]),
+                                            row3(x, h.v[3]), &grad);
+        const double d = wrap_angle(angle - h.rest_angle);
+        const double k = kb * h.weight;
+        energy += 0.5 * k * d * d;
+        if (f != nullptr) {
+          for (int i = 0; i < 4; ++i) f->row(h.v[i]) -= (k * d * grad.segment<3>(3 * i)).transpose();
+        }
+        if (k_values != nullptr) {
+          for (int i = 0; i < 4; ++i) {
+            for (int j = 0; j < 4; ++j) {
+              add_block(k_values, h.v[i], h.v[j],
+                        k * grad.segment<3>(3 * i) * grad.segment<3>(3 * j).transpose());
+            }
+          }
+        }
+      }
+    }
+    return energy;
+  }
+
+  void update_pinned_lists() {
+    diagonal_index.assign(static_cast<std::size_t>(3 * nv), -1);
+    pinned_zero_index.clear();
+    const int* outer = pattern.outerIndexPtr();
+    const int* inner = pattern.innerIndexPtr();
+    for (int col = 0; col < 3 * nv; ++col) {
+      const bool col_pinned = is_pinned[static_cast<std::size_t>(col / 3)] != 0;
+      for (int k = outer[col]; k < outer[col + 1]; ++k) {
+        const int row = inner[k];
+        if (row == col) {
+          diagonal_index[static_cast<std::size_t>(col)] = k;
+        } else if (col_pinned || is_pinned[static_cast<std::size_t>(row / 3)] != 0) {
+          pinned_zero_index.push_back(k);
+        }
+      }
+    }
+    pinned_dirty = false;
+  }
+};
+
+ClothModel::ClothModel(const TriangleMesh& mesh, const Positions& rest,
+                       const ClothMaterial& material, const Positions* warp)
+    : m_impl(std::make_unique<Impl>()) {
+  Impl& m = *m_impl;
+  if (!(material.density > 0) || !(material.stretch_stiffness >= 0) ||
+      !(material.shear_stiffness >= 0) || !(material.bending_stiffness >= 0) ||
+      !(material.stiffness_damping >= 0) || !(material.air_damping >= 0)) {
+    throw InputError("cloth material: density must be positive and stiffnesses and damping ≥ 0");
+  }
+  if (rest.rows() != mesh.num_vertices()) {
+    throw InputError(fmt::format("cloth: {} rest positions for {} vertices", rest.rows(),
+                                 mesh.num_vertices()));
+  }
+  m.material = material;
+  m.nv = mesh.num_vertices();
+  m.faces = mesh.faces();
+  m.is_pinned.assign(static_cast<std::size_t>(m.nv), 0);
+  m.masses = Eigen::VectorXd::Zero(m.nv);
+
+  const Index nf = mesh.num_faces();
+  m.face_rest.resize(static_cast<std::size_t>(nf));
+  std::vector<double> face_area(static_cast<std::size_t>(nf));
+  for (Index t = 0; t < nf; ++t) {
+    const Vec3 p0 = row3(rest, m.faces(t, 0)), p1 = row3(rest, m.faces(t, 1)), p2 = row3(rest, m.faces(t, 2));
+    const Vec3 n = (p1 - p0).cross(p2 - p0);
+    const double area = 0.5 * n.norm();
+    if (!(area > 1e-14 * std::max(1.0, (p1 - p0).squaredNorm()))) {
+      throw InputError(fmt::format("cloth: face {} is degenerate in the rest shape", t));
+    }
+    const Vec3 nh = n.normalized();
+    Vec3 e1 = warp != nullptr ? Vec3(warp->row(t).transpose()) : Vec3(p1 - p0);
+    e1 -= e1.dot(nh) * nh;
+    if (e1.norm() < 1e-6 * (p1 - p0).norm()) e1 = p1 - p0;
+    e1.normalize();
+    const Vec3 e2 = nh.cross(e1);
+    Eigen::Matrix2d D;
+    D << e1.dot(p1 - p0), e1.dot(p2 - p0), e2.dot(p1 - p0), e2.dot(p2 - p0);
+    const Eigen::Matrix2d Di = D.inverse();
+    FaceRest& r = m.face_rest[static_cast<std::size_t>(t)];
+    r.area = area;
+    r.cu = {-(Di(0, 0) + Di(1, 0)), Di(0, 0), Di(1, 0)};
+    r.cv = {-(Di(0, 1) + Di(1, 1)), Di(0, 1), Di(1, 1)};
+    face_area[static_cast<std::size_t>(t)] = area;
+    for (int i = 0; i < 3; ++i) m.masses[m.faces(t, i)] += material.density * area / 3;
+  }
+
+  // Hinges on interior manifold edges, oriented so face 0 holds a->b.
+  for (Index e = 0; e < mesh.num_edges(); ++e) {
+    const auto ef = mesh.edge_faces(e);
+    if (ef.size() != 2) continue;
+    Index a = mesh.edges()(e, 0), b = mesh.edges()(e, 1);
+    const Index f0 = ef[0], f1 = ef[1];
+    const auto third = [&](Index f) {
+      for (int i = 0; i < 3; ++i) {
+        const Index v = m.faces(f, i);
+        if (v != a && v != b) return v;
+      }
+      return Index{-1};
+    };
+    for (int i = 0; i < 3; ++i) {
+      if (m.faces(f0, i) == b && m.faces(f0, (i + 1) % 3) == a) std::swap(a, b);
+    }
+    Hinge h;
+    h.v = {a, b, third(f0), third(f1)};
+    const double len2 = (row3(rest, a) - row3(rest, b)).squaredNorm();
+    h.weight = 3 * len2 / (face_area[static_cast<std::size_t>(f0)] + face_area[static_cast<std::size_t>(f1)]);
+    h.rest_angle = dihedral_angle(row3(rest, a), row3(rest, b), row3(rest, h.v[2]), row3(rest, h.v[3]));
+    m.hinges.push_back(h);
+  }
+
+  // Fixed sparsity: 3x3 blocks for every vertex pair sharing a face or a hinge.
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(static_cast<std::size_t>(9 * (9 * nf + 16 * static_cast<Index>(m.hinges.size()) + m.nv)));
+  const auto add = [&](Index I, Index J) {
+    for (int a = 0; a < 3; ++a) {
+      for (int b = 0; b < 3; ++b) triplets.emplace_back(3 * I + a, 3 * J + b, 1.0);
+    }
+  };
+  for (Index v = 0; v < m.nv; ++v) add(v, v);
+  for (Index t = 0; t < nf; ++t) {
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) add(m.faces(t, i), m.faces(t, j));
+    }
+  }
+  for (const Hinge& h : m.hinges) {
+    for (int i = 0; i < 4; ++i) {
+      for (int j = 0; j < 4; ++j) add(h.v[i], h.v[j]);
+    }
+  }
+  m.pattern.resize(3 * m.nv, 3 * m.nv);
+  m.pattern.setFromTriplets(triplets.begin(), triplets.end());
+  m.pattern.makeCompressed();
+  std::fill(m.pattern.valuePtr(), m.pattern.valuePtr() + m.pattern.nonZeros(), 0.0);
+  m.last_dv = Eigen::VectorXd::Zero(3 * m.nv);
+}
+
+ClothModel::~ClothModel() = default;
+ClothModel::ClothModel(ClothModel&&) noexcept = default;
+ClothModel& ClothModel::operator=(ClothModel&&) noexcept = default;
+
+const ClothMaterial& ClothModel::material() const { return m_impl->material; }
+const Eigen::VectorXd& ClothModel::masses() const { return m_impl->masses; }
+const std::vector<Index>& ClothModel::pinned() const { return m_impl->pinned; }
+
+void ClothModel::set_solver(ClothSolver solver, double cg_tolerance) {
+  m_impl->solver = solver;
+  m_impl->cg_tolerance = cg_tolerance;
+}
+
+void ClothModel::set_pinned(std::vector<Index> vertices) {
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  for (Index v : vertices) {
+    if (v < 0 || v >= m_impl->nv) throw InputError(fmt::format("cloth: pinned vertex {} out of range", v));
+  }
+  m_impl->pinned = std::move(vertices);
+  std::fill(m_impl->is_pinned.begin(), m_impl->is_pinned.end(), 0);
+  for (Index v : m_impl->pinned) m_impl->is_pinned[static_cast<std::size_t>(v)] = 1;
+  m_impl->pinned_dirty = true;
+}
+
+double ClothModel::elastic_energy(const Positions& x) const { return m_impl->evaluate(x, nullptr, nullptr); }
+
+Positions ClothModel::elastic_forces(const Positions& x) const {
+  Positions f = Positions::Zero(x.rows(), 3);
+  m_impl->evaluate(x, &f, nullptr);
+  return f;
+}
+
+ClothEnergy ClothModel::energy(const Positions& x, const Positions& v, const Vec3& gravity) const {
+  ClothEnergy e;
+  const Impl& m = *m_impl;
+  for (Index i = 0; i < m.nv; ++i) {
+    e.kinetic += 0.5 * m.masses[i] * v.row(i).squaredNorm();
+    e.gravity -= m.masses[i] * gravity.dot(row3(x, i));
+  }
+  // Split membrane and bending by evaluating with bending switched off.
+  Impl membrane_only;
+  membrane_only.material = m.material;
+  membrane_only.material.bending_stiffness = 0;
+  membrane_only.faces = m.faces;
+  membrane_only.face_rest = m.face_rest;
+  const double total = m.evaluate(x, nullptr, nullptr);
+  e.membrane = membrane_only.evaluate(x, nullptr, nullptr);
+  e.bending = total - e.membrane;
+  return e;
+}
+
+ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0, const Positions& pinned_targets,
+                               const Vec3& gravity, double h, Positions& x1, Positions& v1) {
+  Impl& m = *m_impl;
+  const Index n = 3 * m.nv;
+  if (x0.rows() != m.nv || v0.rows() != m.nv) {
+    throw InputError(fmt::format("cloth step: {} positions and {} velocities for {} vertices",
+                                 x0.rows(), v0.rows(), m.nv));
+  }
+  if (pinned_targets.rows() != static_cast<Eigen::Index>(m.pinned.size())) {
+    throw InputError(fmt::format("cloth step: {} pinned targets for {} pinned vertices",
+                                 pinned_targets.rows(), m.pinned.size()));
+  }
+  if (m.pinned_dirty) m.update_pinned_lists();
+
+  // Forces and stiffness at x0.
+  Positions f = Positions::Zero(m.nv, 3);
+  SparseMatrix& A = m.pattern;
+  double* values = A.valuePtr();
+  std::fill(values, values + A.nonZeros(), 0.0);
+  m.evaluate(x0, &f, values);
+
+  const Eigen::Map<const Eigen::VectorXd> v(v0.data(), n);
+  const Eigen::VectorXd Kv = A * v;  // A holds K here
+  const double alpha = m.material.air_damping, beta = m.material.stiffness_damping;
+  Eigen::VectorXd b(n);
+  for (Index i = 0; i < m.nv; ++i) {
+    for (int c = 0; c < 3; ++c) {
+      const Index k = 3 * i + c;
+      b[k] = h * (f(i, c) + m.masses[i] * gravity[c] - alpha * m.masses[i] * v[k] - (beta + h) * Kv[k]);
+    }
+  }
+  // A = (1 + h α) M + (h β + h²) K.
+  const double s = h * beta + h * h;
+  for (int k = 0; k < A.nonZeros(); ++k) values[k] *= s;
+  for (Index i = 0; i < m.nv; ++i) {
+    for (int c = 0; c < 3; ++c) values[m.diagonal_index[static_cast<std::size_t>(3 * i + c)]] += (1 + h * alpha) * m.masses[i];
+  }
+
+  // Pinned vertices: known velocity change, eliminated symmetrically.
+  Eigen::VectorXd dv_pinned = Eigen::VectorXd::Zero(n);
+  for (std::size_t p = 0; p < m.pinned.size(); ++p) {
+    const Index i = m.pinned[p];
+    for (int c = 0; c < 3; ++c) {
+      dv_pinned[3 * i + c] = (pinned_targets(static_cast<Eigen::Index>(p), c) - x0(i, c)) / h - v0(i, c);
+    }
+  }
+  if (!m.pinned.empty()) {
+    b -= A * dv_pinned;
+    for (int k : m.pinned_zero_index) values[k] = 0;
+    for (Index i : m.pinned) {
+      for (int c = 0; c < 3; ++c) {
+        values[m.diagonal_index[static_cast<std::size_t>(3 * i + c)]] = 1;
+        b[3 * i + c] = dv_pinned[3 * i + c];
+      }
+    }
+  }
+
+  ClothStepInfo info;
+  Eigen::VectorXd dv;
+  const bool direct = m.solver == ClothSolver::direct ||
+                      (m.solver == ClothSolver::automatic && n <= kDirectSolveLimit);
+  if (direct) {
+    if (!m.ldlt_analyzed) {
+      m.ldlt.analyzePattern(A);
+      m.ldlt_analyzed = true;
+    }
+    m.ldlt.factorize(A);
+    info.ok = m.ldlt.info() == Eigen::Success;
+    if (info.ok) dv = m.ldlt.solve(b);
+  } else {
+    info.direct = false;
+    m.cg.setTolerance(m.cg_tolerance);
+    m.cg.setMaxIterations(1000);
+    m.cg.compute(A);
+    dv = m.cg.solveWithGuess(b, m.last_dv);
+    info.iterations = static_cast<int>(m.cg.iterations());
+    info.ok = m.cg.info() == Eigen::Success || m.cg.info() == Eigen::NoConvergence;
+  }
+  if (info.ok) info.ok = dv.allFinite();
+  if (info.ok) {
+    info.residual = b.norm() > 0 ? (A * dv - b).norm() / b.norm() : 0.0;
+    m.last_dv = dv;
+  } else {
+    dv = dv_pinned;
+  }
+  v1.resize(m.nv, 3);
+  x1.resize(m.nv, 3);
+  Eigen::Map<Eigen::VectorXd>(v1.data(), n) = v + dv;
+  x1 = x0 + h * v1;
+  for (std::size_t p = 0; p < m.pinned.size(); ++p) {
+    const Index i = m.pinned[p];
+    x1.row(i) = pinned_targets.row(static_cast<Eigen::Index>(p));
+    v1.row(i) = (x1.row(i) - x0.row(i)) / h;
+  }
+  return info;
+}
+
+}  // namespace tailor

@@ -1,0 +1,99 @@
+#pragma once
+/// @file
+/// Cloth dynamics: implicit Euler (Baraff & Witkin 1998), one linearised Newton step per
+/// call, with Baraff-Witkin stretch and shear conditions, dihedral-angle bending
+/// (Bridson et al. 2003; Grinspun et al. 2003 weights), gravity, mass- and
+/// stiffness-proportional damping, lumped masses from rest areas and pinned vertices.
+///
+/// Every stiffness matrix is positive semidefinite by construction (Gauss-Newton terms
+/// plus the clamped positive part of the stretch term), so the linear system
+/// `(1 + h α) M + (h β + h²) K` is symmetric positive definite on the free vertices.
+
+#include <memory>
+#include <vector>
+
+#include "tailor/geometry/types.hpp"
+#include "tailor/mesh/triangle_mesh.hpp"
+
+namespace tailor {
+
+/// Material of the cloth (SI units).
+struct ClothMaterial {
+  double density = 0.15;             ///< area density (kg/m²)
+  double stretch_stiffness = 500;    ///< warp/weft stretch stiffness (N/m)
+  double shear_stiffness = 50;       ///< in-plane shear stiffness (N/m)
+  double bending_stiffness = 1e-5;   ///< bending stiffness (N·m)
+  double stiffness_damping = 2e-3;   ///< Rayleigh damping proportional to stiffness (s)
+  double air_damping = 0.2;          ///< Rayleigh damping proportional to mass (1/s)
+};
+
+/// Energies of a state (J).
+struct ClothEnergy {
+  double kinetic = 0, gravity = 0, membrane = 0, bending = 0;
+  double total() const { return kinetic + gravity + membrane + bending; }
+};
+
+/// Linear solver of the implicit step.
+enum class ClothSolver {
+  automatic,  ///< direct up to ClothModel::kDirectSolveLimit unknowns, else iterative
+  direct,     ///< sparse LDLT (exact)
+  iterative,  ///< conjugate gradient, Jacobi preconditioner, warm-started
+};
+
+/// What one implicit step did.
+struct ClothStepInfo {
+  bool direct = true;      ///< sparse LDLT (true) or conjugate gradient (false)
+  int iterations = 0;      ///< CG iterations (0 for LDLT)
+  double residual = 0;     ///< relative residual of the linear solve
+  bool ok = true;          ///< false if the solve failed (then the step keeps v0)
+};
+
+/// Implicit cloth model on a fixed mesh.
+class ClothModel {
+ public:
+  /// Systems with at most this many unknowns use sparse LDLT, larger ones CG.
+  static constexpr Index kDirectSolveLimit = 60000;
+
+  /// `rest` gives rest lengths, angles and areas. `warp` (one row per face, optional)
+  /// is the warp direction of each face; without it, each face's first edge.
+  /// Throws InputError on a non-positive density or negative stiffness, or a
+  /// degenerate rest triangle.
+  ClothModel(const TriangleMesh& mesh, const Positions& rest, const ClothMaterial& material,
+             const Positions* warp = nullptr);
+  ~ClothModel();
+  ClothModel(ClothModel&&) noexcept;
+  ClothModel& operator=(ClothModel&&) noexcept;
+
+  const ClothMaterial& material() const;
+  /// Lumped vertex masses (kg): a third of each incident face's rest area times density.
+  const Eigen::VectorXd& masses() const;
+  /// Vertices whose positions are prescribed (sorted, unique on return).
+  void set_pinned(std::vector<Index> vertices);
+  const std::vector<Index>& pinned() const;
+  /// Chooses the linear solver and, for CG, the relative residual to reach.
+  void set_solver(ClothSolver solver, double cg_tolerance = 1e-6);
+
+  /// One linearised implicit Euler step of length `h` from (x0, v0): writes the
+  /// candidate end positions `x1` and velocities `v1`. Pinned vertex `pinned()[i]` ends at
+  /// `pinned_targets.row(i)`. `gravity` is the acceleration (m/s²).
+  ClothStepInfo step(const Positions& x0, const Positions& v0, const Positions& pinned_targets,
+                     const Vec3& gravity, double h, Positions& x1, Positions& v1);
+
+  /// Membrane plus bending energy of positions `x` (J).
+  double elastic_energy(const Positions& x) const;
+  /// Elastic forces (minus the gradient of elastic_energy) at `x`.
+  Positions elastic_forces(const Positions& x) const;
+  /// Every energy of a state.
+  ClothEnergy energy(const Positions& x, const Positions& v, const Vec3& gravity) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> m_impl;
+};
+
+/// Signed dihedral angle at the hinge `a`-`b` between triangles (a, b, c) and (b, a, d)
+/// (zero when flat) and its gradient with respect to (a, b, c, d).
+double dihedral_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
+                      Eigen::Matrix<double, 12, 1>* gradient = nullptr);
+
+}  // namespace tailor

@@ -1,0 +1,44 @@
+#pragma once
+/// @file
+/// Output of a simulation run: per-frame OBJ meshes, steps.jsonl and summary.json, each
+/// file complete on disk at every moment (written to a temporary name, then renamed;
+/// steps.jsonl is appended whole lines and flushed once per frame).
+
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "tailor/geometry/types.hpp"
+#include "tailor/sim/simulation.hpp"
+
+namespace tailor {
+
+/// Writes a run's files into one folder.
+class FrameWriter {
+ public:
+  /// Creates `directory` (and parents) and starts an empty steps.jsonl. Throws
+  /// InputError naming the folder if it cannot be created or written.
+  explicit FrameWriter(std::filesystem::path directory);
+
+  /// Writes `cloth_NNNN.obj` and `arm_NNNN.obj` for frame `frame` (0 is the initial state).
+  void write_frame(int frame, const Positions& cloth, const FaceArray& cloth_faces,
+                   const Positions& arm, const FaceArray& arm_faces);
+  /// Appends one JSON line per record to steps.jsonl and flushes.
+  void append_steps(const std::vector<StepRecord>& records);
+  /// Writes summary.json (pretty-printed).
+  void write_summary(const nlohmann::json& summary);
+
+  const std::filesystem::path& directory() const { return m_directory; }
+
+ private:
+  std::filesystem::path m_directory;
+  std::ofstream m_steps;
+};
+
+/// `cloth_0007.obj`-style name: `prefix`, an underscore, the frame on four digits (more if
+/// needed) and `.obj`.
+std::string frame_file_name(const std::string& prefix, int frame);
+
+}  // namespace tailor

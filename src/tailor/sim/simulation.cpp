@@ -1,0 +1,253 @@
+/// @file
+/// The arm-sleeve simulation driver.
+
+#include "tailor/sim/simulation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "tailor/detection/intersection_check.hpp"
+#include "tailor/sim/arm_collision.hpp"
+
+namespace tailor {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+void to_json(nlohmann::json& j, const StepRecord& r) {
+  const ContactStats& c = r.contact;
+  j = nlohmann::json{
+      {"frame", r.frame},
+      {"substep", r.substep},
+      {"time", r.time},
+      {"self_collisions", c.self_collisions},
+      {"obstacle_collisions", c.obstacle_collisions},
+      {"repulsions", c.repulsions},
+      {"impulses", c.impulses},
+      {"impulse_iterations", c.impulse_iterations},
+      {"impact_zones", c.impact_zones},
+      {"last_resort", c.last_resort},
+      {"arm_projected", r.arm_projected},
+      {"solver", {{"direct", r.cloth.direct}, {"iterations", r.cloth.iterations},
+                  {"residual", r.cloth.residual}, {"ok", r.cloth.ok}}},
+      {"detection", c.detection},
+      {"ms", {{"forces_solve", r.forces_solve_ms}, {"detection", r.detection_ms},
+              {"response", r.response_ms}, {"check", r.check_ms}, {"step", r.step_ms}}}};
+  if (r.checked) {
+    j["intersections"] = {{"self", r.self_intersections}, {"obstacle", r.obstacle_intersections}};
+  }
+}
+
+struct Simulation::Impl {
+  Scene scene;
+  SimulationOptions options;
+  ClothModel cloth;
+  std::unique_ptr<ContactSolver> contact;
+  std::vector<Index> pinned;
+  Positions pinned_rest;
+  std::vector<char> fixed;
+  Positions x, v, y;
+  ArmSkeleton skeleton;
+  int frame = 0;
+  std::int64_t step_index = 0;
+  std::vector<StepRecord> records;
+  SimulationTotals totals;
+
+  Impl(const SceneConfig& config, SimulationOptions opts)
+      : scene(config),
+        options(opts),
+        cloth([&]() -> ClothModel {
+          const Positions warp = scene.sleeve().warp_directions();
+          return ClothModel(*scene.sleeve().mesh, scene.sleeve().rest, config.material, &warp);
+        }()) {
+    const Sleeve& sleeve = scene.sleeve();
+    pinned = sleeve.pinned_vertices();
+    cloth.set_pinned(pinned);
+    cloth.set_solver(options.solver, options.cg_tolerance);
+    pinned_rest.resize(static_cast<Eigen::Index>(pinned.size()), 3);
+    fixed.assign(static_cast<std::size_t>(sleeve.mesh->num_vertices()), 0);
+    for (std::size_t i = 0; i < pinned.size(); ++i) {
+      pinned_rest.row(static_cast<Eigen::Index>(i)) = sleeve.rest.row(pinned[i]);
+      fixed[static_cast<std::size_t>(pinned[i])] = 1;
+    }
+    x = sleeve.rest;
+    v = Positions::Zero(x.rows(), 3);
+    const ArmPose pose0 = scene.gesture().pose_at(0.0);
+    skeleton = scene.arm().skeleton(pose0);
+    y = scene.arm().skin(pose0);
+    // The pose at t = 0 may differ from the rest pose the sleeve was built in.
+    if (pinned.size() > 0) {
+      const Positions targets = scene.arm().skin_points(pinned_rest, pose0);
+      for (std::size_t i = 0; i < pinned.size(); ++i) x.row(pinned[i]) = targets.row(static_cast<Eigen::Index>(i));
+    }
+    if (options.contact) {
+      Eigen::VectorXd masses = cloth.masses();
+      for (Index p : pinned) masses[p] = std::numeric_limits<double>::infinity();
+      contact = std::make_unique<ContactSolver>(*sleeve.mesh, x, masses, options.detection, config.contact);
+    }
+  }
+
+  void substep(int substep_index) {
+    const SceneConfig& config = scene.config();
+    const Arm& arm = scene.arm();
+    const double h = config.time_step / config.substeps;
+    StepRecord record;
+    record.frame = frame + 1;
+    record.substep = substep_index;
+    // Times from the step count, so long runs do not accumulate rounding.
+    const double t1 = static_cast<double>(step_index + 1) * h;
+    record.time = t1;
+    const auto step_start = Clock::now();
+
+    const ArmPose pose1 = scene.gesture().pose_at(t1);
+    const ArmSkeleton skeleton1 = arm.skeleton(pose1);
+    Positions y1 = arm.skin(pose1);
+    const Positions targets = arm.skin_points(pinned_rest, pose1);
+
+    Positions x1, v1;
+    record.cloth = cloth.step(x, v, targets, config.gravity, h, x1, v1);
+    const ArmCollisionStats arm_stats = project_out_of_arm(
+        arm, skeleton, skeleton1, x, x1, 1.5 * config.contact.thickness, config.contact.friction, fixed);
+    record.arm_projected = arm_stats.projected;
+    record.forces_solve_ms = ms_since(step_start);
+
+    if (contact) {
+      KinematicObstacle obstacle;
+      obstacle.mesh = &arm.mesh();
+      obstacle.x0 = std::move(y);
+      obstacle.x1 = y1;
+      record.contact = contact->resolve(x, x1, obstacle, h);
+      record.detection_ms = record.contact.detection_ms;
+      record.response_ms = record.contact.response_ms;
+    }
+    v = (x1 - x) / h;
+    x = std::move(x1);
+    y = std::move(y1);
+    skeleton = skeleton1;
+
+    if (options.check_intersections ||
+        (options.check_frames && substep_index + 1 == config.substeps)) {
+      const auto check_start = Clock::now();
+      const IntersectionReport report = check_intersections(*scene.sleeve().mesh, x, &arm.mesh(), &y);
+      record.checked = true;
+      record.self_intersections = report.self_intersections + report.adjacent_intersections;
+      record.obstacle_intersections = report.obstacle_intersections;
+      record.check_ms = ms_since(check_start);
+    }
+    record.step_ms = ms_since(step_start);
+    ++step_index;
+    accumulate(record);
+    records.push_back(std::move(record));
+  }
+
+  void accumulate(const StepRecord& r) {
+    SimulationTotals& t = totals;
+    ++t.steps;
+    t.self_collisions += r.contact.self_collisions;
+    t.obstacle_collisions += r.contact.obstacle_collisions;
+    t.intersections += r.intersections();
+    t.checked_steps += r.checked ? 1 : 0;
+    t.impulses += r.contact.impulses;
+    t.impact_zones += r.contact.impact_zones;
+    t.last_resorts += r.contact.last_resort ? 1 : 0;
+    t.failed_solves += r.cloth.ok ? 0 : 1;
+    t.max_ctps = std::max(t.max_ctps, r.contact.detection.candidate_triangle_pairs);
+    t.max_vf = std::max(t.max_vf, r.contact.detection.vf_tested);
+    t.max_ee = std::max(t.max_ee, r.contact.detection.ee_tested);
+    t.detection += r.contact.detection;
+    t.forces_solve_ms += r.forces_solve_ms;
+    t.detection_ms += r.detection_ms;
+    t.response_ms += r.response_ms;
+    t.check_ms += r.check_ms;
+    t.step_ms += r.step_ms;
+  }
+};
+
+Simulation::Simulation(const SceneConfig& config, SimulationOptions options)
+    : m_impl(std::make_unique<Impl>(config, options)) {}
+Simulation::~Simulation() = default;
+Simulation::Simulation(Simulation&&) noexcept = default;
+Simulation& Simulation::operator=(Simulation&&) noexcept = default;
+
+const std::vector<StepRecord>& Simulation::step_frame() {
+  Impl& m = *m_impl;
+  const auto start = Clock::now();
+  m.records.clear();
+  for (int s = 0; s < m.scene.config().substeps; ++s) m.substep(s);
+  ++m.frame;
+  m.totals.frames = m.frame;
+  m.totals.wall_seconds += ms_since(start) / 1000.0;
+  return m.records;
+}
+
+const Scene& Simulation::scene() const { return m_impl->scene; }
+const SimulationOptions& Simulation::options() const { return m_impl->options; }
+int Simulation::frame() const { return m_impl->frame; }
+double Simulation::time() const {
+  return static_cast<double>(m_impl->step_index) * m_impl->scene.config().time_step /
+         m_impl->scene.config().substeps;
+}
+const Positions& Simulation::cloth_positions() const { return m_impl->x; }
+const Positions& Simulation::cloth_velocities() const { return m_impl->v; }
+const Positions& Simulation::arm_positions() const { return m_impl->y; }
+const TriangleMesh& Simulation::cloth_mesh() const { return *m_impl->scene.sleeve().mesh; }
+const TriangleMesh& Simulation::arm_mesh() const { return m_impl->scene.arm().mesh(); }
+const ClothModel& Simulation::cloth_model() const { return m_impl->cloth; }
+ClothEnergy Simulation::energy() const {
+  return m_impl->cloth.energy(m_impl->x, m_impl->v, m_impl->scene.config().gravity);
+}
+const SimulationTotals& Simulation::totals() const { return m_impl->totals; }
+
+nlohmann::json simulation_summary(const Simulation& simulation, bool interrupted) {
+  const SimulationTotals& t = simulation.totals();
+  const double steps = t.steps > 0 ? static_cast<double>(t.steps) : 1.0;
+  const DetectionConfig& d = simulation.options().detection;
+  nlohmann::json j;
+  j["frames"] = t.frames;
+  j["steps"] = t.steps;
+  j["self_collisions"] = t.self_collisions;
+  j["obstacle_collisions"] = t.obstacle_collisions;
+  j["intersections"] = t.intersections;
+  j["checked_steps"] = t.checked_steps;
+  j["interrupted"] = interrupted;
+  j["impulses"] = t.impulses;
+  j["impact_zones"] = t.impact_zones;
+  j["last_resorts"] = t.last_resorts;
+  j["failed_solves"] = t.failed_solves;
+  j["ms_per_step"] = {{"forces_solve", t.forces_solve_ms / steps},
+                      {"detection", t.detection_ms / steps},
+                      {"response", t.response_ms / steps},
+                      {"check", t.check_ms / steps},
+                      {"total", t.step_ms / steps}};
+  j["frames_per_second"] = t.wall_seconds > 0 ? t.frames / t.wall_seconds : 0.0;
+  j["wall_seconds"] = t.wall_seconds;
+  j["candidate_triangle_pairs"] = {{"mean", static_cast<double>(t.detection.candidate_triangle_pairs) / steps},
+                                   {"max", t.max_ctps}};
+  j["vf_tested"] = {{"mean", static_cast<double>(t.detection.vf_tested) / steps}, {"max", t.max_vf}};
+  j["ee_tested"] = {{"mean", static_cast<double>(t.detection.ee_tested) / steps}, {"max", t.max_ee}};
+  j["detection_totals"] = t.detection;
+  j["detection_config"] = {{"normal_cones", d.normal_cones},
+                           {"contour_test", d.contour_test},
+                           {"adjacency_culling", d.adjacency_culling},
+                           {"feature_assignment", d.feature_assignment},
+                           {"primitive_boxes", d.primitive_boxes},
+                           {"coplanarity_filter", d.coplanarity_filter},
+                           {"radial_view", d.radial_view},
+                           {"threads", d.threads}};
+  j["cloth"] = {{"vertices", simulation.cloth_mesh().num_vertices()},
+                {"faces", simulation.cloth_mesh().num_faces()}};
+  j["arm"] = {{"vertices", simulation.arm_mesh().num_vertices()},
+              {"faces", simulation.arm_mesh().num_faces()}};
+  j["scene"] = scene_config_to_json(simulation.scene().config());
+  return j;
+}
+
+}  // namespace tailor

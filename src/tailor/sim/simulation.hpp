@@ -1,0 +1,111 @@
+#pragma once
+/// @file
+/// The arm-sleeve simulation driver (DESIGN.md §4). Per substep: forces and implicit
+/// solve -> candidate x1 -> projection out of the implicit arm -> ContactSolver::resolve
+/// (cloth-cloth and cloth-arm mesh) -> v = (x1 - x0) / h -> optional static
+/// intersection check.
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "tailor/detection/detection_config.hpp"
+#include "tailor/scene/scene.hpp"
+#include "tailor/sim/cloth_model.hpp"
+#include "tailor/sim/contact_solver.hpp"
+
+namespace tailor {
+
+/// How to run a scene.
+struct SimulationOptions {
+  DetectionConfig detection = DetectionConfig::preset("paper");
+  bool check_intersections = false;  ///< run check_intersections() after every substep
+  bool check_frames = false;         ///< run it after the last substep of every frame
+  bool contact = true;               ///< run the ContactSolver (off: cloth model and arm only)
+  ClothSolver solver = ClothSolver::automatic;  ///< linear solver of the implicit step
+  double cg_tolerance = 1e-4;        ///< relative residual for the iterative solver
+};
+
+/// Everything about one substep.
+struct StepRecord {
+  int frame = 0;          ///< frame this substep belongs to (1-based)
+  int substep = 0;        ///< 0-based within the frame
+  double time = 0;        ///< simulated time at the end of the substep (s)
+  ClothStepInfo cloth;    ///< the implicit solve
+  std::int64_t arm_projected = 0;  ///< vertices moved out of the implicit arm
+  ContactStats contact;   ///< the contact solver (self-collisions, impulses, zones, detection)
+  bool checked = false;   ///< whether the static check ran
+  std::int64_t self_intersections = 0;      ///< cloth-cloth (adjacent included), if checked
+  std::int64_t obstacle_intersections = 0;  ///< cloth-arm, if checked
+  double forces_solve_ms = 0;  ///< forces, system assembly, linear solve, arm projection
+  double detection_ms = 0;     ///< self-collision detection inside the contact solver
+  double response_ms = 0;      ///< contact response inside the contact solver
+  double check_ms = 0;         ///< static intersection check
+  double step_ms = 0;          ///< the whole substep
+  std::int64_t intersections() const { return self_intersections + obstacle_intersections; }
+};
+
+/// JSON object of one substep (one line of steps.jsonl).
+void to_json(nlohmann::json& json, const StepRecord& record);
+
+/// Sums and extremes over the substeps run so far.
+struct SimulationTotals {
+  int frames = 0;
+  std::int64_t steps = 0;
+  std::int64_t self_collisions = 0;
+  std::int64_t obstacle_collisions = 0;
+  std::int64_t intersections = 0;  ///< found by the static check (must be 0)
+  std::int64_t checked_steps = 0;
+  std::int64_t impulses = 0;
+  std::int64_t impact_zones = 0;
+  std::int64_t last_resorts = 0;
+  std::int64_t failed_solves = 0;
+  std::int64_t max_ctps = 0, max_vf = 0, max_ee = 0;  ///< per step, sent to detection/CCD
+  DetectionStats detection;  ///< summed over steps
+  double forces_solve_ms = 0, detection_ms = 0, response_ms = 0, check_ms = 0, step_ms = 0;
+  double wall_seconds = 0;   ///< wall time spent in step_frame()
+};
+
+/// Runs a Scene frame by frame.
+class Simulation {
+ public:
+  /// Builds the scene, the cloth model (shoulder ring pinned) and the contact solver.
+  explicit Simulation(const SceneConfig& config, SimulationOptions options = {});
+  ~Simulation();
+  Simulation(Simulation&&) noexcept;
+  Simulation& operator=(Simulation&&) noexcept;
+
+  /// Advances one frame (config().substeps substeps); returns that frame's substeps.
+  const std::vector<StepRecord>& step_frame();
+
+  const Scene& scene() const;
+  const SimulationOptions& options() const;
+  /// Frames completed.
+  int frame() const;
+  /// Simulated time (s).
+  double time() const;
+  /// Cloth positions and velocities now.
+  const Positions& cloth_positions() const;
+  const Positions& cloth_velocities() const;
+  /// Skinned arm positions now.
+  const Positions& arm_positions() const;
+  const TriangleMesh& cloth_mesh() const;
+  const TriangleMesh& arm_mesh() const;
+  const ClothModel& cloth_model() const;
+  /// Energies of the current cloth state.
+  ClothEnergy energy() const;
+  const SimulationTotals& totals() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> m_impl;
+};
+
+/// The summary of a run as JSON: frames, steps, self_collisions, intersections,
+/// interrupted, ms per step split (forces_solve, detection, response, check, total),
+/// frames per second, CTP/VF/EE means and maxima, and the scene.
+nlohmann::json simulation_summary(const Simulation& simulation, bool interrupted);
+
+}  // namespace tailor

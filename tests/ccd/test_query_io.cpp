@@ -1,0 +1,87 @@
+/// The query readers: exact parsing, type from the path, errors naming file and line.
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "ccd_test_support.hpp"
+#include "tailor/ccd/query_io.hpp"
+#include "tailor/geometry/error.hpp"
+
+namespace tailor {
+namespace {
+
+std::string write_temp(const std::string& name, const std::string& text) {
+  const auto dir = std::filesystem::temp_directory_path() / "tailor_ccd_io_test" / "vertex-face";
+  std::filesystem::create_directories(dir);
+  const auto path = (dir / name).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string rows(int n, const std::string& row) {
+  std::string s;
+  for (int i = 0; i < n; ++i) s += row + "\n";
+  return s;
+}
+
+TEST(QueryIo, KindFromPath) {
+  EXPECT_EQ(ccd_query_kind_from_path("x/erleben-spikes/vertex-face/data_0_0.csv"),
+            CcdQueryKind::vertex_face);
+  EXPECT_EQ(ccd_query_kind_from_path("x/unit-tests/edge-edge/data_0_1.csv"),
+            CcdQueryKind::edge_edge);
+  EXPECT_EQ(ccd_query_kind_from_path("cloth-funnel/queries/227vf.csv"), CcdQueryKind::vertex_face);
+  EXPECT_EQ(ccd_query_kind_from_path("cloth-funnel/queries/227ee.csv"), CcdQueryKind::edge_edge);
+  EXPECT_FALSE(ccd_query_kind_from_path("queries/data.csv").has_value());
+}
+
+TEST(QueryIo, ParsesExactly) {
+  // 2^-60 * (2^53 - 1) and a denominator of 2^100 stay exact.
+  const std::string path = write_temp(
+      "ok.csv", rows(8, "9007199254740991,1152921504606846976,3,1267650600228229401496703205376,"
+                        "-5,4,1"));
+  const CcdQueryFile f = read_ccd_queries(path);
+  ASSERT_EQ(f.size(), 1u);
+  ASSERT_EQ(f.truth.size(), 1u);
+  EXPECT_TRUE(f.truth[0]);
+  EXPECT_EQ(f.vertex_face[0].p_t0[0], 9007199254740991.0 * 0x1p-60);
+  EXPECT_EQ(f.vertex_face[0].p_t0[1], 3.0 * 0x1p-100);
+  EXPECT_EQ(f.vertex_face[0].c_t1[2], -1.25);
+}
+
+TEST(QueryIo, ClothFunnelFormatAndTruth) {
+  const std::string d = test::data_dir() + "/cloth-funnel";
+  const CcdQueryFile vf = read_ccd_queries(d + "/queries/227vf.csv");
+  EXPECT_EQ(vf.kind, CcdQueryKind::vertex_face);
+  EXPECT_EQ(vf.size(), 92u);
+  EXPECT_TRUE(vf.truth.empty());
+  EXPECT_EQ(read_ccd_truth_json(d + "/mma_bool/227vf_mma_bool.json").size(), 92u);
+}
+
+void expect_error(const std::string& path, const std::string& fragment) {
+  try {
+    read_ccd_queries(path);
+    FAIL() << "no InputError for " << path;
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find(path), std::string::npos) << msg;
+    EXPECT_NE(msg.find(fragment), std::string::npos) << msg;
+  }
+}
+
+TEST(QueryIo, BadFilesNameFileAndLine) {
+  expect_error(write_temp("cols.csv", rows(3, "1,1,1,1,1,1,0") + "1,1,1\n"), ":4:");
+  expect_error(write_temp("int.csv", rows(2, "1,1,1,1,1,1,0") + "1,x,1,1,1,1,0\n"), ":3:");
+  expect_error(write_temp("den.csv", "1,0,1,1,1,1,0\n"), ":1:");
+  expect_error(write_temp("inexact.csv", "1,3,1,1,1,1,0\n"), ":1:");
+  expect_error(write_temp("count.csv", rows(7, "1,1,1,1,1,1,0")), "multiple of 8");
+  expect_error(write_temp("truth.csv", rows(7, "1,1,1,1,1,1,0") + "1,1,1,1,1,1,1\n"), ":8:");
+  expect_error(write_temp("missing.csv", "") + ".nope", "cannot open");
+  EXPECT_THROW(read_ccd_queries("/tmp/unknown_kind.csv"), InputError);
+  EXPECT_THROW(read_ccd_truth_json(write_temp("t.json", "[true, 3]")), InputError);
+}
+
+}  // namespace
+}  // namespace tailor

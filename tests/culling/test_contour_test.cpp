@@ -1,0 +1,107 @@
+// The contour test and why normal-cone culling needs it.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "tailor/bvh/mesh_bvh.hpp"
+#include "tailor/culling/contour_test.hpp"
+#include "tailor/culling/node_contours.hpp"
+#include "tailor/detection/brute_force.hpp"
+#include "tailor/detection/self_collision_detector.hpp"
+#include "tailor/mesh/procedural_meshes.hpp"
+
+namespace tailor {
+namespace {
+
+// A strip winding 1.25 turns around the z axis with a small pitch: flat enough for a
+// tiny normal cone, but its ends overlap in projection. The pitch flips sign over the
+// step, so the overlapping ends pass through each other.
+struct Ribbon {
+  MeshData mesh;
+  Positions x1;
+};
+
+Ribbon make_ribbon(int segments, double pitch0, double pitch1) {
+  const double turns = 1.25, inner = 1.0, outer = 1.3;
+  Ribbon ribbon;
+  ribbon.mesh = make_grid(segments, 2, 1.0, 1.0);
+  ribbon.x1 = ribbon.mesh.vertices;
+  for (Eigen::Index i = 0; i < ribbon.mesh.vertices.rows(); ++i) {
+    const double s = ribbon.mesh.vertices(i, 0), w = ribbon.mesh.vertices(i, 1);
+    const double angle = 2 * std::numbers::pi * turns * s, radius = inner + (outer - inner) * w;
+    for (auto [x, pitch] : {std::pair{&ribbon.mesh.vertices, pitch0}, {&ribbon.x1, pitch1}}) {
+      x->row(i) << radius * std::cos(angle), radius * std::sin(angle), pitch * s;
+    }
+  }
+  return ribbon;
+}
+
+TEST(ContourTest, RigidlyMovingFlatPatchStaysSimple) {
+  const MeshData grid = make_grid(6, 4, 1.0, 0.7);
+  const TriangleMesh mesh(static_cast<Index>(grid.vertices.rows()), grid.faces);
+  const MeshBvh bvh(mesh, grid.vertices);
+  const NodeContours contours(mesh, bvh);
+  ASSERT_TRUE(contours.has_single_loop(0));
+  EXPECT_EQ(contours.loop(0).size(), 2u * (6 + 4));
+  Positions x1 = grid.vertices;
+  x1.col(2).array() += 0.3;
+  x1.col(0).array() += 0.1;
+  EXPECT_TRUE(contour_stays_simple(contours.loop(0), grid.vertices, x1, Vec3::UnitZ()));
+  // Seen edge-on the same contour is degenerate: the test must refuse.
+  EXPECT_FALSE(contour_stays_simple(contours.loop(0), grid.vertices, x1, Vec3::UnitX()));
+}
+
+TEST(ContourTest, TubeHasNoSingleLoop) {
+  const MeshData tube = make_tube(5, 8, 0.3, 1.0);
+  const TriangleMesh mesh(static_cast<Index>(tube.vertices.rows()), tube.faces);
+  const MeshBvh bvh(mesh, tube.vertices);
+  const NodeContours contours(mesh, bvh);
+  EXPECT_FALSE(contours.has_single_loop(0));  // an annulus: two loops
+}
+
+TEST(ContourTest, OverlappingRibbonIsNotSimple) {
+  const Ribbon ribbon = make_ribbon(60, 0.02, -0.02);
+  const TriangleMesh mesh(static_cast<Index>(ribbon.mesh.vertices.rows()), ribbon.mesh.faces);
+  const MeshBvh bvh(mesh, ribbon.mesh.vertices);
+  const NodeContours contours(mesh, bvh);
+  ASSERT_TRUE(contours.has_single_loop(0));
+  EXPECT_FALSE(contour_stays_simple(contours.loop(0), ribbon.mesh.vertices, ribbon.x1,
+                                    Vec3::UnitZ()));
+}
+
+TEST(ContourTest, TouchingContourIsNotSimple) {
+  // A square loop whose far corner moves onto the opposite edge at t=1 (in projection).
+  Positions x0(4, 3), x1(4, 3);
+  x0 << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
+  x1 = x0;
+  x1.row(2) << 0.5, 0.0, 0.0;  // lands on edge (0, 1)
+  const std::vector<Index> loop{0, 1, 2, 3};
+  EXPECT_FALSE(contour_stays_simple(loop, x0, x1, Vec3::UnitZ()));
+  x1.row(2) << 0.5, std::ldexp(1.0, -40), 0.0;  // stays strictly off it
+  EXPECT_TRUE(contour_stays_simple(loop, x0, x1, Vec3::UnitZ()));
+}
+
+TEST(NormalConeCulling, ContourTestIsWhatKeepsTheRibbonCollisions) {
+  const Ribbon ribbon = make_ribbon(80, 0.02, -0.02);
+  const TriangleMesh mesh(static_cast<Index>(ribbon.mesh.vertices.rows()), ribbon.mesh.faces);
+  const CollisionSet truth = brute_force_self_collisions(mesh, ribbon.mesh.vertices, ribbon.x1);
+  ASSERT_GT(truth.size(), 0u);
+
+  SelfCollisionDetector with_contour(mesh, ribbon.mesh.vertices, DetectionConfig::preset("tang"));
+  const DetectionResult sound = with_contour.detect(ribbon.mesh.vertices, ribbon.x1);
+  EXPECT_EQ(sound.collisions.size(), truth.size());
+  EXPECT_GT(sound.stats.contour_tests_failed, 0);
+
+  // The cone alone (under 90 degrees at the root) would skip the whole ribbon.
+  DetectionConfig unsound = DetectionConfig::preset("tang");
+  unsound.contour_test = false;
+  SelfCollisionDetector without_contour(mesh, ribbon.mesh.vertices, unsound);
+  const DetectionResult culled = without_contour.detect(ribbon.mesh.vertices, ribbon.x1);
+  EXPECT_EQ(culled.stats.candidate_triangle_pairs, 0);
+  EXPECT_LT(culled.collisions.size(), truth.size());
+}
+
+}  // namespace
+}  // namespace tailor

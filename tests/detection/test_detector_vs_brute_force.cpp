@@ -1,0 +1,120 @@
+// Every combination of culling stages reports exactly the brute-force collisions.
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+
+#include "support/random_steps.hpp"
+#include "tailor/detection/brute_force.hpp"
+#include "tailor/detection/self_collision_detector.hpp"
+#include "tailor/io/mesh_io.hpp"
+
+namespace tailor {
+namespace {
+
+bool sanitized() { return std::getenv("TAILOR_SANITIZED") != nullptr; }
+
+// All sound combinations of the switchable stages (the contour test is never off here:
+// without it the cone theorem does not hold).
+std::vector<DetectionConfig> all_stage_combinations() {
+  std::vector<DetectionConfig> configs;
+  for (int bits = 0; bits < 32; ++bits) {
+    DetectionConfig config = DetectionConfig::preset("basic");
+    config.normal_cones = bits & 1;
+    config.contour_test = true;
+    config.adjacency_culling = bits & 2;
+    config.feature_assignment = bits & 4;
+    config.primitive_boxes = bits & 8;
+    config.coplanarity_filter = bits & 16;
+    configs.push_back(config);
+  }
+  return configs;
+}
+
+std::string describe(const DetectionConfig& c) {
+  return "cones=" + std::to_string(c.normal_cones) + " adjacency=" +
+         std::to_string(c.adjacency_culling) + " assignment=" +
+         std::to_string(c.feature_assignment) + " boxes=" + std::to_string(c.primitive_boxes) +
+         " filter=" + std::to_string(c.coplanarity_filter) +
+         " threads=" + std::to_string(c.threads);
+}
+
+void expect_same(const CollisionSet& expected, const CollisionSet& actual,
+                 const std::string& what) {
+  ASSERT_EQ(expected.vertex_face.size(), actual.vertex_face.size()) << what;
+  ASSERT_EQ(expected.edge_edge.size(), actual.edge_edge.size()) << what;
+  for (std::size_t i = 0; i < expected.vertex_face.size(); ++i) {
+    const auto& e = expected.vertex_face[i];
+    const auto& a = actual.vertex_face[i];
+    ASSERT_TRUE(e.vertex == a.vertex && e.face == a.face && e.toi == a.toi)
+        << what << ": VF " << i << " expected (" << e.vertex << ", " << e.face << ") got ("
+        << a.vertex << ", " << a.face << ")";
+  }
+  for (std::size_t i = 0; i < expected.edge_edge.size(); ++i) {
+    const auto& e = expected.edge_edge[i];
+    const auto& a = actual.edge_edge[i];
+    ASSERT_TRUE(e.a0 == a.a0 && e.a1 == a.a1 && e.b0 == a.b0 && e.b1 == a.b1 && e.toi == a.toi)
+        << what << ": EE " << i;
+  }
+}
+
+class DetectorVsBruteForce : public ::testing::TestWithParam<unsigned> {};
+
+TEST_P(DetectorVsBruteForce, EveryStageCombinationEqualsBruteForce) {
+  const int resolution = sanitized() ? 16 : 40;
+  std::int64_t total_collisions = 0, total_ctps_basic = 0, total_ctps_culled = 0;
+  for (const auto& step : testing::make_random_steps(GetParam(), resolution)) {
+    const TriangleMesh mesh(static_cast<Index>(step.mesh.vertices.rows()), step.mesh.faces);
+    const CollisionSet truth = brute_force_self_collisions(mesh, step.mesh.vertices, step.x1);
+    total_collisions += static_cast<std::int64_t>(truth.size());
+    for (DetectionConfig config : all_stage_combinations()) {
+      for (int threads : {1, 2}) {
+        config.threads = threads;
+        SelfCollisionDetector detector(mesh, step.mesh.vertices, config);
+        const DetectionResult result = detector.detect(step.mesh.vertices, step.x1);
+        expect_same(truth, result.collisions, step.name + " " + describe(config));
+        if (!config.normal_cones && !config.adjacency_culling) {
+          total_ctps_basic += result.stats.candidate_triangle_pairs;
+        }
+        if (config.normal_cones && config.adjacency_culling) {
+          total_ctps_culled += result.stats.candidate_triangle_pairs;
+        }
+      }
+    }
+  }
+  // The steps must exercise collisions, and the high-level stages must cut something.
+  EXPECT_GT(total_collisions, 0);
+  EXPECT_LT(total_ctps_culled, total_ctps_basic);
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, DetectorVsBruteForce, ::testing::Values(1u, 2u, 3u));
+
+TEST(DetectorVsBruteForce, LargerMeshesWithPresets) {
+  const int resolution = sanitized() ? 24 : 70;  // ~10K triangles on the grids
+  for (const auto& step : testing::make_random_steps(7, resolution)) {
+    const TriangleMesh mesh(static_cast<Index>(step.mesh.vertices.rows()), step.mesh.faces);
+    const CollisionSet truth = brute_force_self_collisions(mesh, step.mesh.vertices, step.x1);
+    for (const std::string& method : DetectionConfig::preset_names()) {
+      SelfCollisionDetector detector(mesh, step.mesh.vertices, DetectionConfig::preset(method));
+      expect_same(truth, detector.detect(step.mesh.vertices, step.x1).collisions,
+                  step.name + " " + method);
+    }
+  }
+}
+
+TEST(DetectorVsBruteForce, ThickCloth) {
+  const std::string dir = std::string(TAILOR_DATA_DIR) + "/thick-cloth/";
+  const MeshData t0 = read_mesh(dir + "t0.ply");
+  const MeshData t1 = read_mesh(dir + "t1.ply");
+  const TriangleMesh mesh(static_cast<Index>(t0.vertices.rows()), t0.faces);
+  const CollisionSet truth = brute_force_self_collisions(mesh, t0.vertices, t1.vertices);
+  for (DetectionConfig config : all_stage_combinations()) {
+    SelfCollisionDetector detector(mesh, t0.vertices, config);
+    expect_same(truth, detector.detect(t0.vertices, t1.vertices).collisions,
+                "thick-cloth " + describe(config));
+  }
+}
+
+}  // namespace
+}  // namespace tailor
