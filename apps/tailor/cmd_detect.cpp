@@ -17,7 +17,7 @@ namespace tailor::cli {
 namespace {
 
 struct DetectArgs {
-  std::string mesh_t0, mesh_t1, json_path;
+  std::string mesh_t0, mesh_t1, json_path, observers_path;
   bool brute_force = false;
   DetectionOptions detection;
 };
@@ -29,11 +29,32 @@ nlohmann::json collisions_json(const CollisionSet& collisions) {
   return {{"vertex_face", vf}, {"edge_edge", ee}};
 }
 
+// Section loops for radial view: {"loops": [[v, v, ...], ...]}, one loop per observer.
+std::vector<std::vector<Index>> read_section_loops(const std::string& path) {
+  std::ifstream file(path);
+  if (!file) throw InputError(fmt::format("{}: cannot open", path));
+  try {
+    const nlohmann::json json = nlohmann::json::parse(file);
+    if (!json.is_object() || !json.contains("loops") || !json["loops"].is_array()) {
+      throw InputError(fmt::format("{}: expected an object with an array \"loops\"", path));
+    }
+    for (const auto& [key, value] : json.items()) {
+      if (key != "loops") throw InputError(fmt::format("{}: unknown field \"{}\"", path, key));
+    }
+    return json["loops"].get<std::vector<std::vector<Index>>>();
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: {}", path, e.what()));
+  }
+}
+
 void print_stats(const DetectionStats& s) {
   fmt::print("high level : {} node pairs visited, {} nodes culled by cones "
              "({} contour tests, {} failed), {} CTPs\n",
              s.node_pairs_visited, s.nodes_culled_by_cones, s.contour_tests,
              s.contour_tests_failed, s.candidate_triangle_pairs);
+  fmt::print("radial view: {} clusters certified; triangles facing {} / away {} / "
+             "undetermined {}\n",
+             s.clusters_certified, s.radial_positive, s.radial_negative, s.radial_undetermined);
   fmt::print("isolated   : {} VF, {} EE pairs\n", s.isolated_vf_pairs, s.isolated_ee_pairs);
   fmt::print("low level  :        {:>10} {:>10}\n", "VF", "EE");
   fmt::print("  generated         {:>10} {:>10}\n", s.vf_generated, s.ee_generated);
@@ -68,7 +89,9 @@ int run_detect(const DetectArgs& args) {
     fmt::print("method     : brute force\n");
   } else {
     const DetectionConfig config = args.detection.config();
-    SelfCollisionDetector detector(mesh, t0.vertices, config);
+    std::vector<std::vector<Index>> loops;
+    if (!args.observers_path.empty()) loops = read_section_loops(args.observers_path);
+    SelfCollisionDetector detector(mesh, t0.vertices, config, std::move(loops));
     DetectionResult result = detector.detect(t0.vertices, t1.vertices);
     fmt::print("method     : {}\n", args.detection.method);
     print_stats(result.stats);
@@ -95,6 +118,9 @@ const CommandRegistration registration{"detect", [](CLI::App& app) {
       ->required()->check(CLI::ExistingFile);
   command->add_flag("--brute-force", args->brute_force, "Test every feature pair (the oracle)");
   command->add_option("--json", args->json_path, "Write collisions and statistics as JSON");
+  command->add_option("--observers", args->observers_path,
+                      "Radial-view section loops: JSON {\"loops\": [[vertex ids], ...]}")
+      ->check(CLI::ExistingFile);
   args->detection.add_to(*command);
   return [args] { return run_detect(*args); };
 }};

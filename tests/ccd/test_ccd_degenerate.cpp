@@ -28,7 +28,9 @@ void expect_vf(const VertexFaceQuery& q, bool hit, double toi = 0.0) {
     const CcdResult x = detail::vertex_face_ccd_exact(s);
     EXPECT_EQ(r.hit, hit) << "scale 2^" << e;
     EXPECT_EQ(x.hit, hit) << "exact, scale 2^" << e;
-    if (const auto d = detail::vertex_face_ccd_double(s)) EXPECT_EQ(d->hit, hit) << "double";
+    if (const auto d = detail::vertex_face_ccd_double(s)) {
+      EXPECT_EQ(d->hit, hit) << "double";
+    }
     if (hit) {
       EXPECT_LE(r.toi, toi);
       EXPECT_GE(r.toi, toi - 1e-6);
@@ -46,7 +48,9 @@ void expect_ee(const EdgeEdgeQuery& q, bool hit, double toi = 0.0) {
     const CcdResult x = detail::edge_edge_ccd_exact(s);
     EXPECT_EQ(r.hit, hit) << "scale 2^" << e;
     EXPECT_EQ(x.hit, hit) << "exact, scale 2^" << e;
-    if (const auto d = detail::edge_edge_ccd_double(s)) EXPECT_EQ(d->hit, hit) << "double";
+    if (const auto d = detail::edge_edge_ccd_double(s)) {
+      EXPECT_EQ(d->hit, hit) << "double";
+    }
     if (hit) {
       EXPECT_LE(r.toi, toi);
       EXPECT_GE(r.toi, toi - 1e-6);

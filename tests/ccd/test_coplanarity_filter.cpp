@@ -104,9 +104,9 @@ TEST(CoplanarityFilter, HandMadeCases) {
   const double tiny = std::numeric_limits<double>::denorm_min();
   EXPECT_EQ(coplanarity_sign(a, b, c, {0, 0, 1}, a, b, c, {0, 0, tiny}), StepSign::positive);
   // A huge coordinate next to a tiny one (cancellation beyond the double bound).
-  const double big = 0x1p60;
-  EXPECT_EQ(coplanarity_sign({big, 0, 0}, {big + 1, 0, 0}, {big, 1, 0}, {big, 0, 0x1p-40},
-                             {big, 0, 0}, {big + 1, 0, 0}, {big, 1, 0}, {big, 0, 0x1p-40}),
+  const double big = 0x1p40;
+  EXPECT_EQ(coplanarity_sign({big, 0, 0}, {big + 1, 0, 0}, {big, 1, 0}, {big + 1, 1, 0x1p-40},
+                             {big, 0, 0}, {big + 1, 0, 0}, {big, 1, 0}, {big + 1, 1, 0x1p-40}),
             StepSign::positive);
 }
 

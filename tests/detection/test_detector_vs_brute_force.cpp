@@ -62,14 +62,16 @@ void expect_same(const CollisionSet& expected, const CollisionSet& actual,
 class DetectorVsBruteForce : public ::testing::TestWithParam<unsigned> {};
 
 TEST_P(DetectorVsBruteForce, EveryStageCombinationEqualsBruteForce) {
-  const int resolution = sanitized() ? 16 : 40;
+  const int resolution = sanitized() ? 14 : 24;  // ~1.1K triangles on the grids
   std::int64_t total_collisions = 0, total_ctps_basic = 0, total_ctps_culled = 0;
   for (const auto& step : testing::make_random_steps(GetParam(), resolution)) {
     const TriangleMesh mesh(static_cast<Index>(step.mesh.vertices.rows()), step.mesh.faces);
     const CollisionSet truth = brute_force_self_collisions(mesh, step.mesh.vertices, step.x1);
     total_collisions += static_cast<std::int64_t>(truth.size());
     for (DetectionConfig config : all_stage_combinations()) {
+      // Thread counts change the order of work, never the result.
       for (int threads : {1, 2}) {
+        if (threads == 2 && !(config.normal_cones && config.feature_assignment)) continue;
         config.threads = threads;
         SelfCollisionDetector detector(mesh, step.mesh.vertices, config);
         const DetectionResult result = detector.detect(step.mesh.vertices, step.x1);

@@ -30,14 +30,16 @@ RunResult run_cli(const std::string& arguments) {
   return result;
 }
 
-std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
+std::string quoted(const std::filesystem::path& path) {
+  return "'" + path.string() + "'";
+}
 
 TEST(CliInfo, ReferenceMesh) {
   const auto path = std::filesystem::path(TAILOR_DATA_DIR) / "cloth-funnel/frames/227.ply";
   const RunResult r = run_cli("info " + quoted(path));
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  test::expect_contains(r.output, {"vertices:", "9450", "faces:", "18484", "edges:", "boundary loops:",
-                                   "components:", "manifold:", "bounding box"});
+  test::expect_contains(r.output, {"vertices:", "9450", "faces:", "18484", "edges:",
+                                   "boundary loops:", "components:", "manifold:", "bounding box"});
 }
 
 TEST(CliInfo, TruncatedFileExitsWithUsageError) {

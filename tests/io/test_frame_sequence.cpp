@@ -103,7 +103,8 @@ TEST(FrameSequence, DifferentFacesIsAnError) {
 }
 
 TEST(FrameSequence, ReferenceClothFunnelFrames) {
-  const std::filesystem::path folder = std::filesystem::path(TAILOR_DATA_DIR) / "cloth-funnel/frames";
+  const std::filesystem::path folder =
+      std::filesystem::path(TAILOR_DATA_DIR) / "cloth-funnel/frames";
   const FrameSequence frames(folder);
   ASSERT_EQ(frames.num_frames(), 2);
   EXPECT_EQ(frames.path(0).filename(), "227.ply");

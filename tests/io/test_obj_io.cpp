@@ -144,8 +144,10 @@ TEST(ObjIoErrors, FaceWithTwoVertices) {
 
 TEST(ObjIoErrors, GarbageToken) {
   TempDir dir;
-  expect_contains(obj_error(dir, "v 0 0 0\nv 1 zero 0\n"), {"bad.obj", "line 2", "garbage", "zero"});
-  expect_contains(obj_error(dir, std::string(kTriangle) + "f 1 2 x\n"), {"bad.obj", "line 4", "'x'"});
+  expect_contains(obj_error(dir, "v 0 0 0\nv 1 zero 0\n"),
+                  {"bad.obj", "line 2", "garbage", "zero"});
+  expect_contains(obj_error(dir, std::string(kTriangle) + "f 1 2 x\n"),
+                  {"bad.obj", "line 4", "'x'"});
   expect_contains(obj_error(dir, std::string(kTriangle) + "f 1 2 3/\n"), {"line 4", "garbage"});
   expect_contains(obj_error(dir, std::string(kTriangle) + "f 1 2 3//a\n"), {"line 4", "garbage"});
   expect_contains(obj_error(dir, std::string(kTriangle) + "f 1 2 3.5\n"), {"line 4", "garbage"});

@@ -44,7 +44,8 @@ FaceArray random_faces(Index nv, Index nf, unsigned seed) {
   for (Index f = 0; f < nf; ++f) {
     do {
       faces.row(f) << pick(rng), pick(rng), pick(rng);
-    } while (faces(f, 0) == faces(f, 1) || faces(f, 1) == faces(f, 2) || faces(f, 0) == faces(f, 2));
+    } while (faces(f, 0) == faces(f, 1) || faces(f, 1) == faces(f, 2) ||
+             faces(f, 0) == faces(f, 2));
   }
   return faces;
 }
@@ -61,12 +62,10 @@ TEST(PlyIo, RoundTripsInEveryEncodingAndType) {
   const PlyFormat formats[] = {PlyFormat::ascii, PlyFormat::binary_little_endian,
                                PlyFormat::binary_big_endian};
   const PlyType coords[] = {PlyType::float32, PlyType::float64};
-  const std::pair<PlyType, PlyType> lists[] = {{PlyType::uint8, PlyType::int32},
-                                               {PlyType::uint8, PlyType::uint32},
-                                               {PlyType::int32, PlyType::int32},
-                                               {PlyType::uint32, PlyType::uint32},
-                                               {PlyType::int8, PlyType::uint8},
-                                               {PlyType::uint16, PlyType::int16}};
+  const std::pair<PlyType, PlyType> lists[] = {
+      {PlyType::uint8, PlyType::int32}, {PlyType::uint8, PlyType::uint32},
+      {PlyType::int32, PlyType::int32}, {PlyType::uint32, PlyType::uint32},
+      {PlyType::int8, PlyType::uint8},  {PlyType::uint16, PlyType::int16}};
   for (PlyFormat format : formats) {
     for (PlyType coord : coords) {
       for (const auto& [count_type, index_type] : lists) {
@@ -122,7 +121,8 @@ class Body {
       char bytes[sizeof(T)];
       std::memcpy(bytes, &value, sizeof(T));
       const bool big = m_format == PlyFormat::binary_big_endian;
-      if (big == (std::endian::native == std::endian::little)) std::reverse(bytes, bytes + sizeof(T));
+      if (big == (std::endian::native == std::endian::little))
+        std::reverse(bytes, bytes + sizeof(T));
       m_text.append(bytes, sizeof(T));
     }
     return *this;
@@ -156,18 +156,36 @@ std::string odd_layout_file(PlyFormat format) {
   Body b(format);
   b.put<std::uint8_t>(1).put<std::uint8_t>(2).put<float>(0.5f).put<float>(0.25f).end();
   b.put<std::uint8_t>(2).put<std::uint8_t>(0).end();
-  b.put<std::int8_t>(-7).put<std::uint8_t>(3).put<std::uint16_t>(0).put<std::uint16_t>(1)
-      .put<std::uint16_t>(2).put<std::int32_t>(2).put<double>(0.5).put<double>(1.5)
-      .put<std::uint16_t>(9).end();
-  b.put<std::int8_t>(7).put<std::uint8_t>(4).put<std::uint16_t>(0).put<std::uint16_t>(2)
-      .put<std::uint16_t>(3).put<std::uint16_t>(1).put<std::int32_t>(0).put<std::uint16_t>(65535)
+  b.put<std::int8_t>(-7)
+      .put<std::uint8_t>(3)
+      .put<std::uint16_t>(0)
+      .put<std::uint16_t>(1)
+      .put<std::uint16_t>(2)
+      .put<std::int32_t>(2)
+      .put<double>(0.5)
+      .put<double>(1.5)
+      .put<std::uint16_t>(9)
+      .end();
+  b.put<std::int8_t>(7)
+      .put<std::uint8_t>(4)
+      .put<std::uint16_t>(0)
+      .put<std::uint16_t>(2)
+      .put<std::uint16_t>(3)
+      .put<std::uint16_t>(1)
+      .put<std::int32_t>(0)
+      .put<std::uint16_t>(65535)
       .end();
   const double xs[] = {0.125, -1.0, 3.5, 1e-3};
   const std::int16_t ys[] = {0, -300, 32767, 5};
   const std::int8_t zs[] = {-128, 0, 127, -1};
   for (int v = 0; v < 4; ++v) {
-    b.put<float>(1.0f).put<double>(xs[v]).put<std::int16_t>(ys[v]).put<std::int8_t>(zs[v])
-        .put<std::uint32_t>(4000000000u).put<std::int16_t>(-2).end();
+    b.put<float>(1.0f)
+        .put<double>(xs[v])
+        .put<std::int16_t>(ys[v])
+        .put<std::int8_t>(zs[v])
+        .put<std::uint32_t>(4000000000u)
+        .put<std::int16_t>(-2)
+        .end();
   }
   b.put<std::int32_t>(-42).end();
   return header + b.str();
@@ -175,8 +193,8 @@ std::string odd_layout_file(PlyFormat format) {
 
 TEST(PlyIo, SkipsExtraElementsAndPropertiesInEveryEncoding) {
   TempDir dir;
-  for (PlyFormat format : {PlyFormat::ascii, PlyFormat::binary_little_endian,
-                           PlyFormat::binary_big_endian}) {
+  for (PlyFormat format :
+       {PlyFormat::ascii, PlyFormat::binary_little_endian, PlyFormat::binary_big_endian}) {
     SCOPED_TRACE(std::string(ply_format_name(format)));
     write_bytes(dir / "odd.ply", odd_layout_file(format));
     const MeshData m = read_ply(dir / "odd.ply");
@@ -238,9 +256,16 @@ TEST(PlyIoErrors, TruncatedBinaryFile) {
 
 TEST(PlyIoErrors, TruncatedAsciiFile) {
   TempDir dir;
-  expect_contains(ply_error(dir, std::string(kAsciiHeader) + "0 0 0\n1 0 0\n"),
-                  {"bad.ply", "line 12", "unexpected end of file", "3 'vertex' entries",
-                   "only 2", "truncated"});
+  expect_contains(ply_error(dir, std::string(kAsciiHeader) + "0.0000 0 0\n1.0000 0 0\n"),
+                  {"bad.ply", "line 12", "unexpected end of file", "3 'vertex' entries", "only 2",
+                   "truncated"});
+  // So short that the declared counts cannot fit: caught before reading the entries.
+  expect_contains(
+      ply_error(dir, std::string(kAsciiHeader) + "0 0 0\n"),
+      {"bad.ply", "line 10", "unexpected end of file", "3 'vertex' entries", "truncated"});
+  std::string huge = kAsciiHeader;
+  huge.replace(huge.find("vertex 3"), 8, "vertex 2000000000");
+  expect_contains(ply_error(dir, huge + "0 0 0\n"), {"bad.ply", "truncated"});
   expect_contains(ply_error(dir, std::string(kAsciiHeader) + "0 0 0\n1 0 0\n0 1 0\n3 0 1"),
                   {"bad.ply", "line 13", "face 0 has too few values", "truncated"});
 }
@@ -334,7 +359,8 @@ TEST(PlyIoErrors, BadHeaders) {
                   {"bad.ply", "missing format"});
   expect_contains(ply_error(dir, replaced("ascii 1.0", "ascii 2.0")),
                   {"bad.ply", "line 2", "version"});
-  expect_contains(ply_error(dir, replaced("ascii", "utf8")), {"bad.ply", "line 2", "unknown format"});
+  expect_contains(ply_error(dir, replaced("ascii", "utf8")),
+                  {"bad.ply", "line 2", "unknown format"});
   expect_contains(ply_error(dir, replaced("property float z\n", "")),
                   {"bad.ply", "no property 'z'"});
   expect_contains(ply_error(dir, replaced("vertex_indices", "corners")),
@@ -349,8 +375,7 @@ TEST(PlyIoErrors, BadHeaders) {
                   {"bad.ply", "line 3", "garbage element count 'three'"});
   expect_contains(ply_error(dir, replaced("element vertex 3", "element vertices 3")),
                   {"bad.ply", "no 'vertex' element"});
-  expect_contains(ply_error(dir, h.substr(0, h.find("end_header"))),
-                  {"bad.ply", "no end_header"});
+  expect_contains(ply_error(dir, h.substr(0, h.find("end_header"))), {"bad.ply", "no end_header"});
   expect_contains(ply_error(dir, "ply\nformat ascii 1.0\nproperty float x\nend_header\n"),
                   {"bad.ply", "line 3", "before any element"});
   expect_contains(ply_error(dir, replaced("end_header", "weird line\nend_header")),

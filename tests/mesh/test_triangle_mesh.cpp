@@ -24,7 +24,9 @@ FaceArray make_faces(const std::vector<std::array<Index, 3>>& rows) {
   return faces;
 }
 
-std::vector<Index> to_vector(std::span<const Index> s) { return {s.begin(), s.end()}; }
+std::vector<Index> to_vector(std::span<const Index> s) {
+  return {s.begin(), s.end()};
+}
 
 /// Checks every adjacency array of `mesh` against a brute-force computation.
 void expect_matches_brute_force(const TriangleMesh& mesh) {
@@ -247,8 +249,7 @@ TEST(TriangleMesh, PinchedBoundaryAndMoebiusStripTerminate) {
 
 TEST(TriangleMesh, ComponentsAndUnreferencedVertices) {
   // Triangle A, triangle B (disjoint), bow tie C+D; vertex 9 unused.
-  const TriangleMesh mesh(
-      12, make_faces({{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {6, 10, 11}}));
+  const TriangleMesh mesh(12, make_faces({{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {6, 10, 11}}));
   expect_matches_brute_force(mesh);
   EXPECT_EQ(mesh.num_components(), 3);
   EXPECT_EQ(mesh.face_components(), (std::vector<Index>{0, 1, 2, 2}));

@@ -25,7 +25,7 @@ using Bern = std::array<Interval, 4>;
 constexpr double kToiWidth = 0x1p-20;
 /// Work limits before giving the query to the exact path.
 constexpr int kMaxDepth = 40;
-constexpr int kMaxNodes = 400;
+constexpr int kMaxNodes = 200;
 
 /// Coordinates beyond this (or non-finite) go to the exact path: keeps every interval
 /// product finite, so no NaN can arise.
@@ -40,14 +40,17 @@ bool in_range(std::initializer_list<const Vec3*> points) {
 
 Interval half(const Interval& x) { return {next_down(x.lo * 0.5), next_up(x.hi * 0.5)}; }
 
-/// Rigorous Bernstein coefficients of f on [0, 1] from the certified filter values.
+/// Rigorous Bernstein coefficients of f on [0, 1] from the certified filter values;
+/// `identically_zero` is set when every term of every coefficient is exactly zero.
 std::optional<Bern> coplanarity_bernstein(const Vec3& a0, const Vec3& b0, const Vec3& c0,
                                           const Vec3& d0, const Vec3& a1, const Vec3& b1,
-                                          const Vec3& c1, const Vec3& d1) {
+                                          const Vec3& c1, const Vec3& d1,
+                                          bool& identically_zero) {
   double value[4], bound[4];
   if (!coplanarity_bernstein_double(a0, b0, c0, d0, a1, b1, c1, d1, value, bound)) {
     return std::nullopt;
   }
+  identically_zero = bound[0] == 0.0 && bound[1] == 0.0 && bound[2] == 0.0 && bound[3] == 0.0;
   Bern r;
   for (int i = 0; i < 4; ++i) {
     double lo = next_down(value[i] - bound[i]);
@@ -103,7 +106,13 @@ struct Node {
 };
 
 /// Outcome of one subinterval.
-enum class NodeState { empty, hit, unknown };
+enum class NodeState {
+  empty,          ///< no contact anywhere on the closed subinterval
+  root_hit,       ///< f changes sign and only roots of f can be contacts here
+  contact_at_t1,  ///< a contact at the subinterval's start (f identically zero)
+  contact,        ///< a contact somewhere in the subinterval (f identically zero)
+  unknown,
+};
 
 /// Earliest root of f inside a node across which f certainly changes sign and where no
 /// contact other than a root of f is possible: toi within kToiWidth, or nullopt.
@@ -143,11 +152,15 @@ std::optional<CcdResult> subdivide(const Bern& f01, Classify&& classify) {
     // Every branch implies f = 0.
     if (excludes_zero(n.f)) continue;
     const NodeState s = classify(n.t1, n.t2, sign_change(n.f));
+    // Everything before n.t1 is certified contact-free (left-first order).
     if (s == NodeState::empty) continue;
-    if (s == NodeState::hit) {
+    if (s == NodeState::root_hit) {
       const std::optional<double> toi = earliest_root(n);
       if (!toi) return std::nullopt;
       return CcdResult{true, *toi, CcdPath::double_precision};
+    }
+    if (s == NodeState::contact_at_t1 || (s == NodeState::contact && n.t2 - n.t1 <= kToiWidth)) {
+      return CcdResult{true, n.t1, CcdPath::double_precision};
     }
     if (n.depth >= kMaxDepth) return std::nullopt;
     const double tm = 0.5 * (n.t1 + n.t2);
@@ -165,24 +178,40 @@ std::optional<CcdResult> vertex_face_ccd_double(const VertexFaceQuery& q) {
   if (!in_range({&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0, &q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1})) {
     return std::nullopt;
   }
+  bool f_zero = false;
   const auto f = coplanarity_bernstein(q.a_t0, q.b_t0, q.c_t0, q.p_t0, q.a_t1, q.b_t1, q.c_t1,
-                                       q.p_t1);
+                                       q.p_t1, f_zero);
   if (!f) return std::nullopt;
+  auto points = [&](double t1, double t2) {
+    return std::array<IV, 4>{moving_point(q.p_t0, q.p_t1, t1, t2),
+                             moving_point(q.a_t0, q.a_t1, t1, t2),
+                             moving_point(q.b_t0, q.b_t1, t1, t2),
+                             moving_point(q.c_t0, q.c_t1, t1, t2)};
+  };
+  // p certainly inside the open, non-degenerate triangle.
+  auto strictly_inside = [](const FaceConditions<Interval>& fc) {
+    return fc.N.positive() && fc.E_ab.positive() && fc.E_bc.positive() && fc.E_ca.positive();
+  };
   return subdivide(*f, [&](double t1, double t2, bool f_changes_sign) {
-    const IV p = moving_point(q.p_t0, q.p_t1, t1, t2), a = moving_point(q.a_t0, q.a_t1, t1, t2),
-             b = moving_point(q.b_t0, q.b_t1, t1, t2), c = moving_point(q.c_t0, q.c_t1, t1, t2);
-    const FaceConditions<Interval> fc = face_conditions(p, a, b, c);
-    // A hit: a root of f inside the open triangle. Then p is on no edge line (each E > 0),
-    // so the only contacts on this node are roots of f.
-    if (f_changes_sign && fc.N.positive() && fc.E_ab.positive() && fc.E_bc.positive() &&
-        fc.E_ca.positive()) {
-      return NodeState::hit;
+    if (f_zero) {
+      // Coplanar for the whole step: strictly inside at an instant is a contact then.
+      const auto [p, a, b, c] = points(t1, t1);
+      if (strictly_inside(face_conditions(p, a, b, c))) return NodeState::contact_at_t1;
     }
+    const auto [p, a, b, c] = points(t1, t2);
+    const FaceConditions<Interval> fc = face_conditions(p, a, b, c);
+    // A root of f inside the open triangle: p is on no edge line (each E > 0), so the only
+    // contacts on this node are roots of f.
+    if (f_changes_sign && strictly_inside(fc)) return NodeState::root_hit;
     const bool face_empty = !(fc.N.hi > 0.0) || fc.E_ab.negative() || fc.E_bc.negative() ||
                             fc.E_ca.negative();
     if (face_empty && point_segment_empty(p, a, b) && point_segment_empty(p, b, c) &&
         point_segment_empty(p, c, a)) {
       return NodeState::empty;
+    }
+    if (f_zero && t2 - t1 <= kToiWidth) {
+      const auto [p2, a2, b2, c2] = points(t2, t2);
+      if (strictly_inside(face_conditions(p2, a2, b2, c2))) return NodeState::contact;
     }
     return NodeState::unknown;
   });
@@ -193,26 +222,40 @@ std::optional<CcdResult> edge_edge_ccd_double(const EdgeEdgeQuery& q) {
                  &q.eb1_t1})) {
     return std::nullopt;
   }
+  bool f_zero = false;
   const auto f = coplanarity_bernstein(q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1,
-                                       q.ea1_t1, q.eb0_t1, q.eb1_t1);
+                                       q.ea1_t1, q.eb0_t1, q.eb1_t1, f_zero);
   if (!f) return std::nullopt;
+  auto points = [&](double t1, double t2) {
+    return std::array<IV, 4>{moving_point(q.ea0_t0, q.ea0_t1, t1, t2),
+                             moving_point(q.ea1_t0, q.ea1_t1, t1, t2),
+                             moving_point(q.eb0_t0, q.eb0_t1, t1, t2),
+                             moving_point(q.eb1_t0, q.eb1_t1, t1, t2)};
+  };
+  // The lines certainly cross at interior points of both segments (0 < s, u < 1).
+  auto strictly_crossing = [](const EdgeConditions<Interval>& ec) {
+    return ec.M.positive() && ec.S_.positive() && ec.M_minus_S.positive() && ec.U.positive() &&
+           ec.M_minus_U.positive();
+  };
   return subdivide(*f, [&](double t1, double t2, bool f_changes_sign) {
-    const IV a = moving_point(q.ea0_t0, q.ea0_t1, t1, t2),
-             b = moving_point(q.ea1_t0, q.ea1_t1, t1, t2),
-             c = moving_point(q.eb0_t0, q.eb0_t1, t1, t2),
-             d = moving_point(q.eb1_t0, q.eb1_t1, t1, t2);
-    const EdgeConditions<Interval> ec = edge_conditions(a, b, c, d);
-    // A hit: the lines cross at interior points of both segments (0 < s, u < 1), so no
-    // endpoint lies on the other segment: the only contacts here are roots of f.
-    if (f_changes_sign && ec.M.positive() && ec.S_.positive() && ec.M_minus_S.positive() &&
-        ec.U.positive() && ec.M_minus_U.positive()) {
-      return NodeState::hit;
+    if (f_zero) {
+      const auto [a, b, c, d] = points(t1, t1);
+      if (strictly_crossing(edge_conditions(a, b, c, d))) return NodeState::contact_at_t1;
     }
+    const auto [a, b, c, d] = points(t1, t2);
+    const EdgeConditions<Interval> ec = edge_conditions(a, b, c, d);
+    // Crossing at interior points: no endpoint lies on the other segment, so the only
+    // contacts here are roots of f.
+    if (f_changes_sign && strictly_crossing(ec)) return NodeState::root_hit;
     const bool main_empty = !(ec.M.hi > 0.0) || ec.S_.negative() || ec.M_minus_S.negative() ||
                             ec.U.negative() || ec.M_minus_U.negative();
     if (main_empty && point_segment_empty(a, c, d) && point_segment_empty(b, c, d) &&
         point_segment_empty(c, a, b) && point_segment_empty(d, a, b)) {
       return NodeState::empty;
+    }
+    if (f_zero && t2 - t1 <= kToiWidth) {
+      const auto [a2, b2, c2, d2] = points(t2, t2);
+      if (strictly_crossing(edge_conditions(a2, b2, c2, d2))) return NodeState::contact;
     }
     return NodeState::unknown;
   });

@@ -2,6 +2,8 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -15,10 +17,36 @@ namespace {
 
 using PV = V3<ExactPoly>;
 
-/// The linearly moving point x0 + t (x1 - x0), exactly.
-PV moving_point(const Vec3& x0, const Vec3& x1) {
+/// The power of two that makes every coordinate an integer: scaling all positions by a
+/// common positive factor scales every polynomial by a positive constant (signs and roots
+/// unchanged), and integer coefficients keep the rational arithmetic cheap.
+long integer_scale(std::initializer_list<const Vec3*> points) {
+  long k = 0;
+  for (const Vec3* x : points) {
+    for (int i = 0; i < 3; ++i) {
+      const double v = (*x)[i];
+      if (v == 0.0) continue;
+      int e = 0;
+      const double m = std::frexp(v, &e);  // v = m 2^e, 0.5 <= |m| < 1
+      // m 2^53 is an integer; drop its trailing zero bits.
+      auto mi = static_cast<long long>(std::ldexp(m, 53));
+      long shift = 53 - e;
+      while ((mi & 1) == 0) {
+        mi >>= 1;
+        --shift;
+      }
+      k = std::max(k, shift);
+    }
+  }
+  return k;
+}
+
+/// The linearly moving point (x0 + t (x1 - x0)) 2^scale, exactly.
+PV moving_point(const Vec3& x0, const Vec3& x1, long scale) {
   auto coord = [&](int k) {
-    const mpq_class a(x0[k]), b(x1[k]);
+    mpq_class a(x0[k]), b(x1[k]);
+    mpq_mul_2exp(a.get_mpq_t(), a.get_mpq_t(), static_cast<mp_bitcnt_t>(scale));
+    mpq_mul_2exp(b.get_mpq_t(), b.get_mpq_t(), static_cast<mp_bitcnt_t>(scale));
     return ExactPoly::linear(a, b - a);
   };
   return {coord(0), coord(1), coord(2)};
@@ -58,18 +86,63 @@ CcdResult to_result(const std::optional<mpq_class>& toi) {
   return r;
 }
 
+bool holds(int sign, bool strict) { return strict ? sign > 0 : sign >= 0; }
+
+/// Point p on closed segment ab at root r of squarefree fs (f != 0).
+bool point_on_segment_at(const ExactPoly& fs, RealRoot& r, const PointSegment<ExactPoly>& s) {
+  return sign_at_root(fs, r, s.cross.x) == 0 && sign_at_root(fs, r, s.cross.y) == 0 &&
+         sign_at_root(fs, r, s.cross.z) == 0 && sign_at_root(fs, r, s.along) >= 0 &&
+         sign_at_root(fs, r, s.within) >= 0;
+}
+
+/// f != 0: every contact is at a root of f, so walk its roots in increasing order and stop
+/// at the first one where the main system or an endpoint-on-segment branch holds.
+/// `main` lists the main system's conditions; `segments(i)` gives branch i (0..n-1).
+template <class Segments>
+std::optional<mpq_class> first_root_contact(const ExactPoly& f,
+                                            const std::vector<SignCondition>& main,
+                                            int segment_count, Segments&& segments) {
+  const ExactPoly fs = squarefree_part(f);
+  std::vector<RealRoot> roots = isolate_roots_unit(fs);
+  std::vector<std::optional<PointSegment<ExactPoly>>> cache(segment_count);
+  for (RealRoot& r : roots) {
+    bool ok = true;
+    for (const auto& c : main) {
+      if (!holds(sign_at_root(fs, r, c.poly), c.strict)) {
+        ok = false;
+        break;
+      }
+    }
+    for (int i = 0; !ok && i < segment_count; ++i) {
+      if (!cache[i]) cache[i] = segments(i);
+      ok = point_on_segment_at(fs, r, *cache[i]);
+    }
+    if (ok) return root_lower_bound(fs, r, tolerance());
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 CcdResult vertex_face_ccd_exact(const VertexFaceQuery& q) {
   check_finite({&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0, &q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1});
-  const PV p = moving_point(q.p_t0, q.p_t1), a = moving_point(q.a_t0, q.a_t1),
-           b = moving_point(q.b_t0, q.b_t1), c = moving_point(q.c_t0, q.c_t1);
+  const long s =
+      integer_scale({&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0, &q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1});
+  const PV p = moving_point(q.p_t0, q.p_t1, s), a = moving_point(q.a_t0, q.a_t1, s),
+           b = moving_point(q.b_t0, q.b_t1, s), c = moving_point(q.c_t0, q.c_t1, s);
+  // Every branch needs f = 0 (p coplanar with the triangle).
   const ExactPoly f = coplanarity(a, b, c, p);
-  // Every branch needs f = 0: a nonzero f without a root in [0, 1] means no contact.
-  if (!f.is_zero() && isolate_roots_unit(squarefree_part(f)).empty()) return to_result({});
+  if (!f.is_zero() && f.degree() == 0) return to_result({});
   const FaceConditions<ExactPoly> fc = face_conditions(p, a, b, c);
-  std::optional<mpq_class> best = earliest_solution(
-      f, {{fc.N, true}, {fc.E_ab, false}, {fc.E_bc, false}, {fc.E_ca, false}}, tolerance());
+  const std::vector<SignCondition> main{
+      {fc.N, true}, {fc.E_ab, false}, {fc.E_bc, false}, {fc.E_ca, false}};
+  if (!f.is_zero()) {
+    const PV* ends[3][2] = {{&a, &b}, {&b, &c}, {&c, &a}};
+    return to_result(first_root_contact(f, main, 3, [&](int i) {
+      return point_segment(p, *ends[i][0], *ends[i][1]);
+    }));
+  }
+  std::optional<mpq_class> best = earliest_solution(f, main, tolerance());
   keep_min(best, point_on_segment(p, a, b));
   keep_min(best, point_on_segment(p, b, c));
   keep_min(best, point_on_segment(p, c, a));
@@ -79,15 +152,26 @@ CcdResult vertex_face_ccd_exact(const VertexFaceQuery& q) {
 CcdResult edge_edge_ccd_exact(const EdgeEdgeQuery& q) {
   check_finite({&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0, &q.ea0_t1, &q.ea1_t1, &q.eb0_t1,
                 &q.eb1_t1});
-  const PV a = moving_point(q.ea0_t0, q.ea0_t1), b = moving_point(q.ea1_t0, q.ea1_t1),
-           c = moving_point(q.eb0_t0, q.eb0_t1), d = moving_point(q.eb1_t0, q.eb1_t1);
+  const long s = integer_scale({&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0, &q.ea0_t1,
+                                &q.ea1_t1, &q.eb0_t1, &q.eb1_t1});
+  const PV a = moving_point(q.ea0_t0, q.ea0_t1, s), b = moving_point(q.ea1_t0, q.ea1_t1, s),
+           c = moving_point(q.eb0_t0, q.eb0_t1, s), d = moving_point(q.eb1_t0, q.eb1_t1, s);
   const ExactPoly f = coplanarity(a, b, c, d);
-  if (!f.is_zero() && isolate_roots_unit(squarefree_part(f)).empty()) return to_result({});
+  if (!f.is_zero() && f.degree() == 0) return to_result({});
   const EdgeConditions<ExactPoly> ec = edge_conditions(a, b, c, d);
-  std::optional<mpq_class> best = earliest_solution(
-      f,
-      {{ec.M, true}, {ec.S_, false}, {ec.M_minus_S, false}, {ec.U, false}, {ec.M_minus_U, false}},
-      tolerance());
+  const std::vector<SignCondition> main{{ec.M, true},
+                                        {ec.S_, false},
+                                        {ec.M_minus_S, false},
+                                        {ec.U, false},
+                                        {ec.M_minus_U, false}};
+  if (!f.is_zero()) {
+    // Endpoint on the other segment: a and b on cd, c and d on ab.
+    const PV* cases[4][3] = {{&a, &c, &d}, {&b, &c, &d}, {&c, &a, &b}, {&d, &a, &b}};
+    return to_result(first_root_contact(f, main, 4, [&](int i) {
+      return point_segment(*cases[i][0], *cases[i][1], *cases[i][2]);
+    }));
+  }
+  std::optional<mpq_class> best = earliest_solution(f, main, tolerance());
   keep_min(best, point_on_segment(a, c, d));
   keep_min(best, point_on_segment(b, c, d));
   keep_min(best, point_on_segment(c, a, b));

@@ -285,12 +285,12 @@ namespace {
 
 bool holds(int sign, bool strict) { return strict ? sign > 0 : sign >= 0; }
 
-mpq_class lower_bound(const ExactPoly& p, RealRoot root, const mpq_class& tolerance) {
+}  // namespace
+
+mpq_class root_lower_bound(const ExactPoly& p, RealRoot root, const mpq_class& tolerance) {
   while (!root.exact && root.hi - root.lo > tolerance) refine_root(p, root);
   return root.lo;
 }
-
-}  // namespace
 
 std::optional<mpq_class> earliest_solution(const ExactPoly& p,
                                            const std::vector<SignCondition>& conditions,
@@ -307,51 +307,63 @@ std::optional<mpq_class> earliest_solution(const ExactPoly& p,
           break;
         }
       }
-      if (ok) return lower_bound(ps, r, tolerance);
+      if (ok) return root_lower_bound(ps, r, tolerance);
     }
     return std::nullopt;
   }
 
-  // p == 0: the conditions hold on a union of points and intervals whose ends are roots
-  // of the conditions or 0, 1. Sample every root and one point in every gap.
-  ExactPoly product(mpq_class(1));
+  // p == 0: the set S where every condition holds is a union of points and intervals; its
+  // infimum is 0 or a root of some condition, and a candidate c is the infimum's upper
+  // bound iff c is in S or S contains (c, c + eps). Sign of q just right of c: the sign of
+  // the first derivative of q that does not vanish at c.
+  std::vector<const SignCondition*> moving;
   for (const auto& c : conditions) {
     if (c.poly.degree() <= 0) {
       const int s = c.poly.is_zero() ? 0 : sign_of(c.poly.coefficients()[0]);
       if (!holds(s, c.strict)) return std::nullopt;
     } else {
-      product = product * c.poly;
+      moving.push_back(&c);
     }
   }
-  if (product.degree() <= 0) return mpq_class(0);
-  const ExactPoly r = squarefree_part(product);
-  auto roots = isolate_roots_unit(r);
-  auto holds_at_point = [&](const mpq_class& t) {
-    for (const auto& c : conditions) {
-      if (!holds(c.poly.sign_at(t), c.strict)) return false;
+  if (moving.empty()) return mpq_class(0);
+
+  // Signs at c and just right of c of every moving condition; `sign_of_poly(q)` gives the
+  // exact sign of q at c.
+  auto qualifies = [&](auto&& sign_of_poly, bool at_one) {
+    bool in_set = true, right_of = !at_one;
+    for (const SignCondition* c : moving) {
+      const int s = sign_of_poly(c->poly);
+      in_set = in_set && holds(s, c->strict);
+      if (right_of) {
+        int r = s;
+        for (ExactPoly d = c->poly.derivative(); r == 0 && !d.is_zero(); d = d.derivative()) {
+          r = sign_of_poly(d);
+        }
+        right_of = holds(r, c->strict);
+      }
+      if (!in_set && !right_of) return false;
     }
     return true;
   };
-  auto holds_at_root = [&](RealRoot& root) {
-    for (const auto& c : conditions) {
-      if (!holds(sign_at_root(r, root, c.poly), c.strict)) return false;
-    }
-    return true;
-  };
-  const bool starts_at_root0 = !roots.empty() && roots.front().exact && roots.front().lo == 0;
-  // The gap [0, first root) (or all of [0, 1]) has the signs of t = 0.
-  if (!starts_at_root0 && holds_at_point(mpq_class(0))) return mpq_class(0);
-  for (std::size_t i = 0; i < roots.size(); ++i) {
-    if (holds_at_root(roots[i])) return lower_bound(r, roots[i], tolerance);
-    if (i + 1 < roots.size()) {
-      const mpq_class sample = (roots[i].hi + roots[i + 1].lo) / 2;
-      if (holds_at_point(sample)) return lower_bound(r, roots[i], tolerance);
-    } else if (!(roots[i].exact && roots[i].lo == 1)) {
-      // The last gap (root, 1] has the signs of t = 1.
-      if (holds_at_point(mpq_class(1))) return lower_bound(r, roots[i], tolerance);
+
+  const mpq_class zero(0);
+  if (qualifies([&](const ExactPoly& q) { return q.sign_at(zero); }, false)) return zero;
+  std::optional<mpq_class> best;
+  for (const SignCondition* c : moving) {
+    const ExactPoly d = squarefree_part(c->poly);
+    for (RealRoot root : isolate_roots_unit(d)) {
+      if (root.exact && root.lo == 0) continue;  // done above
+      // A candidate can only improve on the best if its interval starts below it.
+      if (best && root.lo >= *best) break;
+      const bool at_one = root.exact && root.lo == 1;
+      if (qualifies([&](const ExactPoly& q) { return sign_at_root(d, root, q); }, at_one)) {
+        const mpq_class lb = root_lower_bound(d, root, tolerance);
+        if (!best || lb < *best) best = lb;
+        break;  // later roots of this condition are larger
+      }
     }
   }
-  return std::nullopt;
+  return best;
 }
 
 }  // namespace tailor::detail

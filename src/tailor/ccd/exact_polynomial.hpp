@@ -71,6 +71,9 @@ void refine_root(const ExactPoly& p, RealRoot& root);
 /// Exact sign of `q` at `root` of squarefree `p` (refines the root as needed).
 int sign_at_root(const ExactPoly& p, RealRoot& root, const ExactPoly& q);
 
+/// A rational lower bound of `root` of squarefree `p` within `tolerance` of it.
+mpq_class root_lower_bound(const ExactPoly& p, RealRoot root, const mpq_class& tolerance);
+
 /// One sign condition `poly > 0` (strict) or `poly >= 0`.
 struct SignCondition {
   ExactPoly poly;

@@ -16,46 +16,85 @@ struct Moving {
   double magnitude() const { return v0.norm() + v1.norm(); }
 };
 
-// Sign of a quadratic given by Bernstein coefficients c, each known to within `bound`:
-// +1 / -1 when all three are certainly of that strict sign, 0 otherwise.
-int certain_sign(const std::array<double, 3>& c, double bound) {
-  if (c[0] > bound && c[1] > bound && c[2] > bound) return 1;
-  if (c[0] < -bound && c[1] < -bound && c[2] < -bound) return -1;
-  return 0;
+// A quadratic in t given by its Bernstein coefficients on [0, 1], each known to within
+// `bound` (a certified forward error bound).
+struct Quadratic {
+  std::array<double, 3> c;
+  double bound;
+
+  // +1 / -1 when the quadratic is certainly of that strict sign on [lo, hi], else 0.
+  // The coefficients on [lo, hi] come from the blossom B(s, u); lo and hi are dyadic
+  // and the blossom is a convex combination, so its rounding adds at most a few eps of
+  // the largest coefficient to the bound.
+  int sign_on(double lo, double hi) const {
+    auto blossom = [&](double s, double u) {
+      return c[0] * (1 - s) * (1 - u) + c[1] * ((1 - s) * u + s * (1 - u)) + c[2] * s * u;
+    };
+    const std::array<double, 3> d{blossom(lo, lo), blossom(lo, hi), blossom(hi, hi)};
+    const double slack =
+        bound + 16 * kEps * std::max({std::abs(c[0]), std::abs(c[1]), std::abs(c[2])});
+    if (d[0] > slack && d[1] > slack && d[2] > slack) return 1;
+    if (d[0] < -slack && d[1] < -slack && d[2] < -slack) return -1;
+    return 0;
+  }
+};
+
+// a·(u(t)×v(t)): the 2D orientation in the projection along a.
+Quadratic orientation(const Moving& u, const Moving& v, const Vec3& a) {
+  return {{a.dot(u.v0.cross(v.v0)), 0.5 * a.dot(u.v0.cross(v.v1) + u.v1.cross(v.v0)),
+           a.dot(u.v1.cross(v.v1))},
+          32 * kEps * u.magnitude() * v.magnitude() * a.norm()};
 }
 
-// Bernstein coefficients of a·(u(t)×v(t)): the 2D orientation in the projection.
-int orientation_sign(const Moving& u, const Moving& v, const Vec3& a) {
-  const std::array<double, 3> c{a.dot(u.v0.cross(v.v0)),
-                                0.5 * a.dot(u.v0.cross(v.v1) + u.v1.cross(v.v0)),
-                                a.dot(u.v1.cross(v.v1))};
-  return certain_sign(c, 32 * kEps * u.magnitude() * v.magnitude() * a.norm());
-}
-
-// Sign of |a|² (u⊥·v⊥) = (u·v)|a|² - (u·a)(v·a), the projected dot product.
-int projected_dot_sign(const Moving& u, const Moving& v, const Vec3& a) {
+// |a|² (u⊥·v⊥) = (u·v)|a|² - (u·a)(v·a): the projected dot product, scaled.
+Quadratic projected_dot(const Moving& u, const Moving& v, const Vec3& a) {
   const double aa = a.squaredNorm();
   const double ua0 = u.v0.dot(a), ua1 = u.v1.dot(a), va0 = v.v0.dot(a), va1 = v.v1.dot(a);
-  const std::array<double, 3> c{
-      u.v0.dot(v.v0) * aa - ua0 * va0,
-      0.5 * ((u.v0.dot(v.v1) + u.v1.dot(v.v0)) * aa - ua0 * va1 - ua1 * va0),
-      u.v1.dot(v.v1) * aa - ua1 * va1};
-  return certain_sign(c, 32 * kEps * u.magnitude() * v.magnitude() * aa);
+  return {{u.v0.dot(v.v0) * aa - ua0 * va0,
+           0.5 * ((u.v0.dot(v.v1) + u.v1.dot(v.v0)) * aa - ua0 * va1 - ua1 * va0),
+           u.v1.dot(v.v1) * aa - ua1 * va1},
+          32 * kEps * u.magnitude() * v.magnitude() * aa};
 }
 
 Moving difference(const Positions& x0, const Positions& x1, Index from, Index to) {
   return {x0.row(to) - x0.row(from), x1.row(to) - x1.row(from)};
 }
 
-// Segments pq and rs certainly disjoint at every t: r and s strictly on one side of pq
-// throughout, or p and q strictly on one side of rs throughout.
+// True when `holds(lo, hi)` can be established on every piece of a dyadic subdivision
+// of [0, 1] at most kMaxDepth levels deep (a condition may hold on the whole step
+// only piecewise, e.g. a corner that straightens while it turns through 90 degrees).
+constexpr int kMaxDepth = 3;
+template <class Condition>
+bool holds_piecewise(const Condition& holds, double lo = 0, double hi = 1, int depth = 0) {
+  if (holds(lo, hi)) return true;
+  if (depth == kMaxDepth) return false;
+  const double mid = 0.5 * (lo + hi);
+  return holds_piecewise(holds, lo, mid, depth + 1) && holds_piecewise(holds, mid, hi, depth + 1);
+}
+
+// Consecutive edges u = (w[i-1], w[i]) and v = (w[i], w[i+1]) meet only at w[i] while
+// they turn strictly one way, or while their projected dot product stays positive.
+bool corner_stays_simple(const Moving& u, const Moving& v, const Vec3& a) {
+  const Quadratic turn = orientation(u, v, a), dot = projected_dot(u, v, a);
+  return holds_piecewise(
+      [&](double lo, double hi) { return dot.sign_on(lo, hi) > 0 || turn.sign_on(lo, hi) != 0; });
+}
+
+// Segments pq and rs certainly disjoint: on each piece of the step, r and s strictly on
+// one side of pq, or p and q strictly on one side of rs.
 bool certainly_disjoint(const Positions& x0, const Positions& x1, Index p, Index q, Index r,
                         Index s, const Vec3& a) {
   const Moving pq = difference(x0, x1, p, q), rs = difference(x0, x1, r, s);
-  const int side_r = orientation_sign(pq, difference(x0, x1, p, r), a);
-  if (side_r != 0 && side_r == orientation_sign(pq, difference(x0, x1, p, s), a)) return true;
-  const int side_p = orientation_sign(rs, difference(x0, x1, r, p), a);
-  return side_p != 0 && side_p == orientation_sign(rs, difference(x0, x1, r, q), a);
+  const Quadratic side_r = orientation(pq, difference(x0, x1, p, r), a);
+  const Quadratic side_s = orientation(pq, difference(x0, x1, p, s), a);
+  const Quadratic side_p = orientation(rs, difference(x0, x1, r, p), a);
+  const Quadratic side_q = orientation(rs, difference(x0, x1, r, q), a);
+  return holds_piecewise([&](double lo, double hi) {
+    const int r_sign = side_r.sign_on(lo, hi);
+    if (r_sign != 0 && r_sign == side_s.sign_on(lo, hi)) return true;
+    const int p_sign = side_p.sign_on(lo, hi);
+    return p_sign != 0 && p_sign == side_q.sign_on(lo, hi);
+  });
 }
 
 struct Box2 {
@@ -74,9 +113,10 @@ bool contour_stays_simple(std::span<const Index> loop, const Positions& x0, cons
   // Consecutive edges meet only at their shared vertex: they never fold back onto each
   // other (projected dot stays positive) or they turn strictly one way throughout.
   for (Index i = 0; i < m; ++i) {
-    const Moving u = difference(x0, x1, at(i - 1), at(i));
-    const Moving v = difference(x0, x1, at(i), at(i + 1));
-    if (projected_dot_sign(u, v, axis) <= 0 && orientation_sign(u, v, axis) == 0) return false;
+    if (!corner_stays_simple(difference(x0, x1, at(i - 1), at(i)),
+                             difference(x0, x1, at(i), at(i + 1)), axis)) {
+      return false;
+    }
   }
   if (m == 3) return true;  // a triangle has no non-adjacent edge pair
 

@@ -15,6 +15,9 @@ struct DetectionStats {
   std::int64_t contour_tests = 0;         ///< contour tests run (cone was under 90°)
   std::int64_t contour_tests_failed = 0;  ///< contour tests that could not certify
   std::int64_t clusters_certified = 0;    ///< radial-view clusters skipped whole
+  std::int64_t radial_positive = 0;       ///< radial view: triangles (real + ghost) facing
+  std::int64_t radial_negative = 0;       ///<   their observer, facing away, or neither
+  std::int64_t radial_undetermined = 0;   ///<   over the whole step
   std::int64_t candidate_triangle_pairs = 0;  ///< CTPs emitted
   std::int64_t isolated_vf_pairs = 0;     ///< VF pairs of the isolated set
   std::int64_t isolated_ee_pairs = 0;     ///< EE pairs of the isolated set

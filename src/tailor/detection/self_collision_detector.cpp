@@ -10,6 +10,7 @@
 #include "tailor/culling/bvh_traversal.hpp"
 #include "tailor/culling/isolated_set.hpp"
 #include "tailor/culling/node_contours.hpp"
+#include "tailor/culling/radial_view.hpp"
 #include "tailor/detection/exact_pair_tests.hpp"
 #include "tailor/geometry/error.hpp"
 
@@ -36,22 +37,37 @@ struct SelfCollisionDetector::Impl {
   const TriangleMesh& mesh;
   DetectionConfig config;
   tbb::task_arena arena;
-  MeshBvh bvh;
-  NodeContours contours;
+  // One BVH over the whole mesh, or one per radial-view cluster.
+  std::vector<MeshBvh> bvhs;
+  std::vector<NodeContours> contours;
+  RadialViewClusters clusters;
+  bool use_radial_view = false;
   IsolatedSet isolated;
   PrimitivePairGenerator generator;
   std::vector<TrianglePair> ctps;
   std::vector<VertexFacePair> vf_pairs;
   std::vector<EdgeEdgePair> ee_pairs;
 
-  Impl(const TriangleMesh& mesh_, const Positions& x_build, DetectionConfig config_)
+  Impl(const TriangleMesh& mesh_, const Positions& x_build, DetectionConfig config_,
+       std::vector<std::vector<Index>> section_loops)
       : mesh(mesh_),
         config(config_),
         arena(config_.threads > 0 ? config_.threads : tbb::task_arena::automatic) {
     check_positions(mesh, x_build, "the build frame");
+    use_radial_view = config.radial_view && !section_loops.empty();
     arena.execute([&] {
-      bvh = MeshBvh(mesh, x_build);
-      if (config.normal_cones && config.contour_test) contours = NodeContours(mesh, bvh);
+      if (use_radial_view) {
+        clusters = RadialViewClusters(mesh, x_build, std::move(section_loops));
+        for (Index c = 0; c < clusters.num_clusters(); ++c) {
+          bvhs.emplace_back(mesh, x_build, clusters.faces(c));
+        }
+      } else {
+        bvhs.emplace_back(mesh, x_build);
+      }
+      contours.resize(bvhs.size());
+      if (config.normal_cones && config.contour_test) {
+        for (std::size_t c = 0; c < bvhs.size(); ++c) contours[c] = NodeContours(mesh, bvhs[c]);
+      }
       if (config.adjacency_culling) isolated = IsolatedSet::build(mesh);
       generator = PrimitivePairGenerator(mesh);
     });
@@ -64,7 +80,7 @@ struct SelfCollisionDetector::Impl {
     DetectionStats& stats = result.stats;
     arena.execute([&] {
       const auto start = Clock::now();
-      bvh.refit(x0, x1, config.normal_cones);
+      for (MeshBvh& bvh : bvhs) bvh.refit(x0, x1, config.normal_cones);
       stats.refit_ms = elapsed_ms(start);
 
       auto stage = Clock::now();
@@ -72,7 +88,23 @@ struct SelfCollisionDetector::Impl {
       TraversalCounts traversal;
       const TraversalOptions options{config.normal_cones, config.contour_test,
                                      config.adjacency_culling};
-      self_traversal(mesh, bvh, contours, {x0, x1}, options, ctps, traversal);
+      std::vector<char> certified(bvhs.size(), 0);
+      if (use_radial_view) {
+        RadialViewCounts radial;
+        certified = clusters.certify(x0, x1, radial);
+        stats.clusters_certified = radial.clusters_certified;
+        stats.radial_positive = radial.triangles_positive;
+        stats.radial_negative = radial.triangles_negative;
+        stats.radial_undetermined = radial.triangles_undetermined;
+      }
+      for (std::size_t c = 0; c < bvhs.size(); ++c) {
+        if (!certified[c]) {
+          self_traversal(mesh, bvhs[c], contours[c], {x0, x1}, options, ctps, traversal);
+        }
+        for (std::size_t d = c + 1; d < bvhs.size(); ++d) {
+          pair_traversal(mesh, bvhs[c], bvhs[d], options, ctps, traversal);
+        }
+      }
       stats.traversal_ms = elapsed_ms(stage);
       stats.node_pairs_visited = traversal.node_pairs_visited;
       stats.nodes_culled_by_cones = traversal.nodes_culled_by_cones;
@@ -110,8 +142,9 @@ struct SelfCollisionDetector::Impl {
 };
 
 SelfCollisionDetector::SelfCollisionDetector(const TriangleMesh& mesh, const Positions& x_build,
-                                             DetectionConfig config)
-    : m_impl(std::make_unique<Impl>(mesh, x_build, config)) {}
+                                             DetectionConfig config,
+                                             std::vector<std::vector<Index>> section_loops)
+    : m_impl(std::make_unique<Impl>(mesh, x_build, config, std::move(section_loops))) {}
 SelfCollisionDetector::~SelfCollisionDetector() = default;
 SelfCollisionDetector::SelfCollisionDetector(SelfCollisionDetector&&) noexcept = default;
 SelfCollisionDetector& SelfCollisionDetector::operator=(SelfCollisionDetector&&) noexcept = default;

@@ -24,9 +24,13 @@ struct DetectionResult {
 /// Built once per topology; `detect` may be called for any number of steps.
 class SelfCollisionDetector {
  public:
-  /// `x_build` positions the BVH is built on (usually the first frame).
+  /// `x_build` positions the BVH is built on (usually the first frame). `mesh` must
+  /// outlive the detector. `section_loops` (optional) are rings of vertices of a
+  /// tube-like garment, one per observation point, for radial-view culling (used when
+  /// `config.radial_view` is on).
   SelfCollisionDetector(const TriangleMesh& mesh, const Positions& x_build,
-                        DetectionConfig config = DetectionConfig::preset("paper"));
+                        DetectionConfig config = DetectionConfig::preset("paper"),
+                        std::vector<std::vector<Index>> section_loops = {});
   ~SelfCollisionDetector();
   SelfCollisionDetector(SelfCollisionDetector&&) noexcept;
   SelfCollisionDetector& operator=(SelfCollisionDetector&&) noexcept;

@@ -56,9 +56,10 @@ std::optional<FramePattern> parse_pattern(const std::string& text) {
       ++j;
     }
     if (j >= text.size() || (text[j] != 'd' && text[j] != 'i' && text[j] != 'u')) {
-      throw InputError(fmt::format("frame pattern '{}': unsupported conversion at position {} "
-                                   "(use %d, %04d, ...; %% for a literal %)",
-                                   text, i));
+      throw InputError(
+          fmt::format("frame pattern '{}': unsupported conversion at position {} "
+                      "(use %d, %04d, ...; %% for a literal %)",
+                      text, i));
     }
     if (found) {
       throw InputError(fmt::format("frame pattern '{}' has more than one %d conversion", text));
@@ -128,7 +129,8 @@ std::vector<std::filesystem::path> list_folder(const std::filesystem::path& fold
 
 }  // namespace
 
-std::vector<std::filesystem::path> list_frame_files(const std::filesystem::path& folder_or_pattern) {
+std::vector<std::filesystem::path> list_frame_files(
+    const std::filesystem::path& folder_or_pattern) {
   const std::string text = folder_or_pattern.string();
   if (text.find('%') != std::string::npos) {
     if (const auto pattern = parse_pattern(text)) {
@@ -149,9 +151,10 @@ std::vector<std::filesystem::path> list_frame_files(const std::filesystem::path&
   }
   std::error_code ec;
   if (std::filesystem::is_directory(folder_or_pattern, ec)) return list_folder(folder_or_pattern);
-  throw InputError(fmt::format("cannot open frames '{}': not a folder, and not a pattern such "
-                               "as frames/%d.ply",
-                               text));
+  throw InputError(
+      fmt::format("cannot open frames '{}': not a folder, and not a pattern such "
+                  "as frames/%d.ply",
+                  text));
 }
 
 FrameSequence::FrameSequence(const std::filesystem::path& folder_or_pattern)
@@ -164,8 +167,8 @@ FrameSequence::FrameSequence(std::vector<std::filesystem::path> paths) : m_paths
 
 Positions FrameSequence::load(Index i) const {
   if (i < 0 || i >= num_frames()) {
-    throw InputError(fmt::format("frame {} does not exist (the sequence has {} frames)", i,
-                                 num_frames()));
+    throw InputError(
+        fmt::format("frame {} does not exist (the sequence has {} frames)", i, num_frames()));
   }
   if (i == 0) return m_first.vertices;
   const std::filesystem::path& file = m_paths[static_cast<std::size_t>(i)];
@@ -182,11 +185,11 @@ Positions FrameSequence::load(Index i) const {
   }
   for (Index f = 0; f < frame.faces.rows(); ++f) {
     if (frame.faces.row(f) != m_first.faces.row(f)) {
-      throw InputError(fmt::format("{}: faces differ from the first frame {} (face {} is {} {} {} "
-                                   "here but {} {} {} there)",
-                                   file.string(), first, f, frame.faces(f, 0), frame.faces(f, 1),
-                                   frame.faces(f, 2), m_first.faces(f, 0), m_first.faces(f, 1),
-                                   m_first.faces(f, 2)));
+      throw InputError(fmt::format(
+          "{}: faces differ from the first frame {} (face {} is {} {} {} "
+          "here but {} {} {} there)",
+          file.string(), first, f, frame.faces(f, 0), frame.faces(f, 1), frame.faces(f, 2),
+          m_first.faces(f, 0), m_first.faces(f, 1), m_first.faces(f, 2)));
     }
   }
   return std::move(frame.vertices);

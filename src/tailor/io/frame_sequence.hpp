@@ -34,7 +34,9 @@ class FrameSequence {
   /// All frame files, in order.
   const std::vector<std::filesystem::path>& paths() const { return m_paths; }
   /// The file of frame `i`.
-  const std::filesystem::path& path(Index i) const { return m_paths.at(static_cast<std::size_t>(i)); }
+  const std::filesystem::path& path(Index i) const {
+    return m_paths.at(static_cast<std::size_t>(i));
+  }
   /// Vertex count shared by every frame.
   Index num_vertices() const { return static_cast<Index>(m_first.vertices.rows()); }
   /// Faces shared by every frame (those of the first frame).

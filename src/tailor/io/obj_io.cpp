@@ -27,11 +27,11 @@ using namespace text_scan;
 /// OBJ statements that carry nothing this reader needs.
 bool is_ignored_statement(std::string_view keyword) {
   static constexpr std::array<std::string_view, 34> kIgnored = {
-      "vn",    "vt",    "vp",     "g",         "o",        "s",        "usemtl",
-      "mtllib", "l",    "p",      "cstype",    "deg",      "bmat",     "step",
-      "curv",  "curv2", "surf",   "parm",      "trim",     "hole",     "scrv",
-      "sp",    "end",   "con",    "mg",        "bevel",    "c_interp", "d_interp",
-      "lod",   "shadow_obj", "trace_obj", "ctech", "stech", "maplib"};
+      "vn",     "vt",         "vp",        "g",      "o",     "s",        "usemtl",
+      "mtllib", "l",          "p",         "cstype", "deg",   "bmat",     "step",
+      "curv",   "curv2",      "surf",      "parm",   "trim",  "hole",     "scrv",
+      "sp",     "end",        "con",       "mg",     "bevel", "c_interp", "d_interp",
+      "lod",    "shadow_obj", "trace_obj", "ctech",  "stech", "maplib"};
   return std::find(kIgnored.begin(), kIgnored.end(), keyword) != kIgnored.end();
 }
 
@@ -45,8 +45,8 @@ class ObjParser {
     std::size_t pos = 0;
     while (pos < m_text.size()) {
       ++m_line;
-      const char* nl = static_cast<const char*>(
-          std::memchr(m_text.data() + pos, '\n', m_text.size() - pos));
+      const char* nl =
+          static_cast<const char*>(std::memchr(m_text.data() + pos, '\n', m_text.size() - pos));
       const std::size_t end = nl ? static_cast<std::size_t>(nl - m_text.data()) : m_text.size();
       parse_line(m_text.substr(pos, end - pos));
       pos = end + 1;
@@ -138,9 +138,10 @@ class ObjParser {
     if (index < 0) {
       const std::int64_t resolved = num_vertices() + index;
       if (resolved < 0) {
-        fail(fmt::format("relative face vertex index {} refers before the first vertex "
-                         "({} vertices so far)",
-                         index, num_vertices()));
+        fail(
+            fmt::format("relative face vertex index {} refers before the first vertex "
+                        "({} vertices so far)",
+                        index, num_vertices()));
       }
       return static_cast<Index>(resolved);
     }
@@ -216,17 +217,17 @@ void write_obj(const std::filesystem::path& path, const Positions& vertices,
   for (Index v = 0; v < nv; ++v) {
     const double x = vertices(v, 0), y = vertices(v, 1), z = vertices(v, 2);
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) {
-      throw InputError(fmt::format("cannot write {}: vertex {} has a non-finite coordinate",
-                                   path.string(), v));
+      throw InputError(
+          fmt::format("cannot write {}: vertex {} has a non-finite coordinate", path.string(), v));
     }
     fmt::format_to(std::back_inserter(out), "v {:.17g} {:.17g} {:.17g}\n", x, y, z);
   }
   for (Index f = 0; f < faces.rows(); ++f) {
     for (int i = 0; i < 3; ++i) {
       if (faces(f, i) < 0 || faces(f, i) >= nv) {
-        throw InputError(fmt::format(
-            "cannot write {}: face {} has vertex index {} out of range ({} vertices)",
-            path.string(), f, faces(f, i), nv));
+        throw InputError(
+            fmt::format("cannot write {}: face {} has vertex index {} out of range ({} vertices)",
+                        path.string(), f, faces(f, i), nv));
       }
     }
     fmt::format_to(std::back_inserter(out), "f {} {} {}\n", faces(f, 0) + 1, faces(f, 1) + 1,

@@ -44,7 +44,9 @@ std::size_t type_size(PlyType type) {
   return 0;
 }
 
-bool is_integer(PlyType type) { return type != PlyType::float32 && type != PlyType::float64; }
+bool is_integer(PlyType type) {
+  return type != PlyType::float32 && type != PlyType::float64;
+}
 
 std::int64_t type_min(PlyType type) {
   switch (type) {
@@ -204,7 +206,8 @@ class PlyParser {
     if (!have_format) fail_line(m_line, "missing format line in the header");
     check_header();
     ++m_line;  // the body starts on the line after end_header
-    m_swap = (m_format == PlyFormat::binary_little_endian) != (std::endian::native == std::endian::little);
+    m_swap = (m_format == PlyFormat::binary_little_endian) !=
+             (std::endian::native == std::endian::little);
   }
 
   void parse_element_line(std::string_view line) {
@@ -218,8 +221,8 @@ class PlyParser {
       fail_line(m_line, fmt::format("garbage element count '{}'", count));
     }
     if (element.count < 0) {
-      fail_line(m_line, fmt::format("negative count {} for element '{}'", element.count,
-                                    element.name));
+      fail_line(m_line,
+                fmt::format("negative count {} for element '{}'", element.count, element.name));
     }
     if (!next_token(line).empty()) fail_line(m_line, "garbage after the element count");
     for (const PlyElement& other : m_elements) {
@@ -282,14 +285,15 @@ class PlyParser {
       it->role = role;
     }
     if (face != nullptr) {
-      auto it = std::find_if(face->properties.begin(), face->properties.end(),
-                             [](const PlyProperty& p) {
-                               return p.name == "vertex_indices" || p.name == "vertex_index";
-                             });
+      auto it =
+          std::find_if(face->properties.begin(), face->properties.end(), [](const PlyProperty& p) {
+            return p.name == "vertex_indices" || p.name == "vertex_index";
+          });
       if (it == face->properties.end()) {
         fail_line(m_line, "the face element has no list property 'vertex_indices'");
       }
-      if (!it->is_list) fail_line(m_line, fmt::format("face property '{}' is not a list", it->name));
+      if (!it->is_list)
+        fail_line(m_line, fmt::format("face property '{}' is not a list", it->name));
       if (!is_integer(it->value_type)) {
         fail_line(m_line, fmt::format("face property '{}' has non-integer type '{}'", it->name,
                                       ply_type_name(it->value_type)));
@@ -305,7 +309,8 @@ class PlyParser {
     } else if (element.name == "face") {
       // Reserve only what the remaining bytes could hold (a bad count must not allocate).
       const std::size_t possible = (m_bytes.size() - m_pos) / 2;
-      m_face_ids.reserve(3 * std::min<std::size_t>(static_cast<std::size_t>(element.count), possible));
+      m_face_ids.reserve(3 *
+                         std::min<std::size_t>(static_cast<std::size_t>(element.count), possible));
     }
   }
 
@@ -326,7 +331,8 @@ class PlyParser {
     }
     for (std::size_t i = 0; i < k; ++i) {
       for (std::size_t j = i + 1; j < k && k <= 16; ++j) {
-        if (m_polygon[i] == m_polygon[j]) fail_at(fmt::format("face {} repeats vertex {}", f, m_polygon[i]));
+        if (m_polygon[i] == m_polygon[j])
+          fail_at(fmt::format("face {} repeats vertex {}", f, m_polygon[i]));
       }
     }
     if (k > 16) {
@@ -336,7 +342,8 @@ class PlyParser {
       if (dup != sorted.end()) fail_at(fmt::format("face {} repeats vertex {}", f, *dup));
     }
     if (k > 3) ++m_num_polygons;
-    if (m_face_ids.size() / 3 + (k - 2) > static_cast<std::size_t>(std::numeric_limits<Index>::max())) {
+    if (m_face_ids.size() / 3 + (k - 2) >
+        static_cast<std::size_t>(std::numeric_limits<Index>::max())) {
       fail_at("too many faces");
     }
     for (std::size_t i = 1; i + 1 < k; ++i) {
@@ -379,9 +386,10 @@ class PlyParser {
   std::string_view ascii_value(const PlyElement& element, std::int64_t i) {
     const std::string_view token = ascii_token();
     if (token.empty()) {
-      fail_here(fmt::format("{} {} has too few values on its line (truncated file or wrong "
-                            "property list?)",
-                            element.name, i));
+      fail_here(
+          fmt::format("{} {} has too few values on its line (truncated file or wrong "
+                      "property list?)",
+                      element.name, i));
     }
     return token;
   }
@@ -409,12 +417,24 @@ class PlyParser {
   }
 
   void read_ascii_element(const PlyElement& element) {
+    if (element.properties.empty()) return;  // entries without values: nothing to read
+    // Every value takes at least two bytes (a digit and a separator): reject counts that
+    // cannot fit before allocating for them.
+    const std::size_t remaining = m_bytes.size() - m_pos;
+    const std::size_t min_entry = 2 * element.properties.size();
+    if (static_cast<std::uint64_t>(element.count) > (remaining + 1) / min_entry) {
+      fail_here(
+          fmt::format("unexpected end of file: the header declares {} '{}' entries but "
+                      "only {} bytes follow, too few to hold them (truncated file?)",
+                      element.count, element.name, remaining));
+    }
     begin_element(element);
     for (std::int64_t i = 0; i < element.count; ++i) {
       if (!ascii_next_record()) {
-        fail_here(fmt::format("unexpected end of file: the header declares {} '{}' entries but "
-                              "only {} were found (truncated file?)",
-                              element.count, element.name, i));
+        fail_here(
+            fmt::format("unexpected end of file: the header declares {} '{}' entries but "
+                        "only {} were found (truncated file?)",
+                        element.count, element.name, i));
       }
       const std::size_t record_line = m_line;
       for (const PlyProperty& property : element.properties) {
@@ -432,16 +452,17 @@ class PlyParser {
             }
           }
         } else {
-          const double value = ascii_number(ascii_value(element, i), property.value_type,
-                                            property.name);
+          const double value =
+              ascii_number(ascii_value(element, i), property.value_type, property.name);
           if (property.role != Role::skip) store_coordinate(property.role, i, value);
         }
       }
       const std::string_view extra = ascii_token();
       if (!extra.empty()) {
-        fail_here(fmt::format("unexpected value '{}' after the last property of {} {} (do the "
-                              "counts in the header match the data?)",
-                              extra, element.name, i));
+        fail_here(
+            fmt::format("unexpected value '{}' after the last property of {} {} (do the "
+                        "counts in the header match the data?)",
+                        extra, element.name, i));
       }
       if (element.name == "face") add_polygon(i, record_line);
     }
@@ -454,8 +475,9 @@ class PlyParser {
     if constexpr (sizeof(T) == 1) {
       std::memcpy(&value, m_bytes.data() + m_pos, 1);
     } else {
-      using U = std::conditional_t<sizeof(T) == 2, std::uint16_t,
-                                   std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>>;
+      using U =
+          std::conditional_t<sizeof(T) == 2, std::uint16_t,
+                             std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>>;
       U bits;
       std::memcpy(&bits, m_bytes.data() + m_pos, sizeof(T));
       if (m_swap) {
@@ -521,21 +543,21 @@ class PlyParser {
   }
 
   void read_binary_element(const PlyElement& element) {
+    if (element.properties.empty()) return;  // entries without values take no bytes
     // Every entry needs at least its fixed-size part: reject absurd counts up front.
     std::size_t min_entry = 0;
     for (const PlyProperty& p : element.properties) {
       min_entry += p.is_list ? type_size(p.count_type) : type_size(p.value_type);
     }
     const std::size_t remaining = m_bytes.size() - m_pos;
-    if (min_entry > 0 &&
-        static_cast<std::uint64_t>(element.count) > remaining / min_entry) {
-      fail_byte(m_bytes.size(),
-                fmt::format("unexpected end of file: the header declares {} '{}' entries (at "
-                            "least {} bytes) but only {} bytes follow from byte {} (truncated "
-                            "file?)",
-                            element.count, element.name,
-                            static_cast<std::uint64_t>(element.count) * min_entry, remaining,
-                            m_pos));
+    if (min_entry > 0 && static_cast<std::uint64_t>(element.count) > remaining / min_entry) {
+      fail_byte(
+          m_bytes.size(),
+          fmt::format("unexpected end of file: the header declares {} '{}' entries (at "
+                      "least {} bytes) but only {} bytes follow from byte {} (truncated "
+                      "file?)",
+                      element.count, element.name,
+                      static_cast<std::uint64_t>(element.count) * min_entry, remaining, m_pos));
     }
     begin_element(element);
     for (std::int64_t i = 0; i < element.count; ++i) {
@@ -545,7 +567,9 @@ class PlyParser {
           need(type_size(property.count_type), element, i);
           const std::size_t count_at = m_pos;
           const std::int64_t n = load_integer(property.count_type);
-          if (n < 0) fail_byte(count_at, fmt::format("negative list length {} in '{}' entry {}", n, element.name, i));
+          if (n < 0)
+            fail_byte(count_at,
+                      fmt::format("negative list length {} in '{}' entry {}", n, element.name, i));
           const std::size_t bytes = static_cast<std::size_t>(n) * type_size(property.value_type);
           need(bytes, element, i);
           if (property.role == Role::face_indices) {
@@ -564,8 +588,8 @@ class PlyParser {
             if (!std::isfinite(value)) {
               fail_byte(at, fmt::format("vertex {} has a non-finite coordinate ({})", i, value));
             }
-            m_coords[3 * static_cast<std::size_t>(i) + static_cast<std::size_t>(property.role) - 1] =
-                value;
+            m_coords[3 * static_cast<std::size_t>(i) + static_cast<std::size_t>(property.role) -
+                     1] = value;
           }
         }
       }
@@ -576,8 +600,9 @@ class PlyParser {
   void check_trailing_data() {
     if (m_format == PlyFormat::ascii) {
       if (ascii_next_record()) {
-        fail_here("unexpected data after the last element (do the counts in the header match "
-                  "the data?)");
+        fail_here(
+            "unexpected data after the last element (do the counts in the header match "
+            "the data?)");
       }
     } else if (m_pos != m_bytes.size()) {
       fail_byte(m_pos, fmt::format("{} bytes of unexpected data after the last element (do the "
@@ -603,9 +628,10 @@ class PlyParser {
 // -------------------------------------------------------------------- writer helpers
 template <typename T>
 void append_binary(std::string& out, T value, bool swap) {
-  using U = std::conditional_t<sizeof(T) == 1, std::uint8_t,
-            std::conditional_t<sizeof(T) == 2, std::uint16_t,
-            std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>>>;
+  using U = std::conditional_t<
+      sizeof(T) == 1, std::uint8_t,
+      std::conditional_t<sizeof(T) == 2, std::uint16_t,
+                         std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>>>;
   U bits;
   std::memcpy(&bits, &value, sizeof(T));
   if (swap) {
@@ -683,8 +709,8 @@ MeshData read_ply(const std::filesystem::path& path) {
   return PlyParser(path, bytes).parse();
 }
 
-void write_ply(const std::filesystem::path& path, const Positions& vertices,
-               const FaceArray& faces, const PlyWriteOptions& options) {
+void write_ply(const std::filesystem::path& path, const Positions& vertices, const FaceArray& faces,
+               const PlyWriteOptions& options) {
   const std::string name = path.string();
   if (is_integer(options.coordinate_type)) {
     throw InputError(fmt::format("cannot write {}: coordinate type '{}' is not float or double",
@@ -719,9 +745,10 @@ void write_ply(const std::filesystem::path& path, const Positions& vertices,
       const double value = vertices(v, axis);
       const float value32 = static_cast<float>(value);
       if (!std::isfinite(value) || (single && !std::isfinite(value32))) {
-        throw InputError(fmt::format("cannot write {}: vertex {} has a coordinate ({}) that is "
-                                     "not finite{}",
-                                     name, v, value, single ? " as a float" : ""));
+        throw InputError(
+            fmt::format("cannot write {}: vertex {} has a coordinate ({}) that is "
+                        "not finite{}",
+                        name, v, value, single ? " as a float" : ""));
       }
       if (binary) {
         if (single) {
@@ -744,9 +771,9 @@ void write_ply(const std::filesystem::path& path, const Positions& vertices,
     for (int i = 0; i < 3; ++i) {
       const Index id = faces(f, i);
       if (id < 0 || id >= nv) {
-        throw InputError(fmt::format(
-            "cannot write {}: face {} has vertex index {} out of range ({} vertices)", name, f, id,
-            nv));
+        throw InputError(
+            fmt::format("cannot write {}: face {} has vertex index {} out of range ({} vertices)",
+                        name, f, id, nv));
       }
       if (!binary) out.push_back(' ');
       append_integer(out, options.index_type, id, binary, swap);

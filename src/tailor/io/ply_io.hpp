@@ -20,9 +20,9 @@ enum class PlyType { int8, uint8, int16, uint16, int32, uint32, float32, float64
 /// How write_ply encodes a mesh.
 struct PlyWriteOptions {
   PlyFormat format = PlyFormat::binary_little_endian;  ///< body encoding
-  PlyType coordinate_type = PlyType::float64;  ///< float32 or float64
-  PlyType count_type = PlyType::uint8;         ///< type of the face list length (integer)
-  PlyType index_type = PlyType::int32;         ///< type of the face vertex ids (integer)
+  PlyType coordinate_type = PlyType::float64;          ///< float32 or float64
+  PlyType count_type = PlyType::uint8;                 ///< type of the face list length (integer)
+  PlyType index_type = PlyType::int32;                 ///< type of the face vertex ids (integer)
 };
 
 /// Reads a PLY file: ASCII or binary (either byte order), version 1.0; elements in any
@@ -38,8 +38,8 @@ MeshData read_ply(const std::filesystem::path& path);
 /// cannot be written, the options are invalid (e.g. an integer coordinate type, or an
 /// index type too small for the vertex count), a coordinate is not finite (or does not
 /// fit in a float32), or a face index is out of range.
-void write_ply(const std::filesystem::path& path, const Positions& vertices,
-               const FaceArray& faces, const PlyWriteOptions& options = {});
+void write_ply(const std::filesystem::path& path, const Positions& vertices, const FaceArray& faces,
+               const PlyWriteOptions& options = {});
 
 /// The header name of a type (`char`, `uchar`, `short`, `ushort`, `int`, `uint`,
 /// `float`, `double`).

@@ -12,7 +12,9 @@
 namespace tailor::text_scan {
 
 /// True for the blanks that separate tokens on one line.
-inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+inline bool is_blank(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+}
 
 /// Skips blanks at the front of `s`.
 inline void skip_blanks(std::string_view& s) {

@@ -49,8 +49,8 @@ TriangleMesh::TriangleMesh(Index num_vertices, FaceArray faces)
     for (int i = 0; i < 3; ++i) {
       const Index v = m_faces(f, i);
       if (v < 0 || v >= nv) {
-        throw InputError(fmt::format("face {} has vertex index {} out of range (mesh has {} vertices)",
-                                     f, v, nv));
+        throw InputError(fmt::format(
+            "face {} has vertex index {} out of range (mesh has {} vertices)", f, v, nv));
       }
     }
     if (m_faces(f, 0) == m_faces(f, 1) || m_faces(f, 1) == m_faces(f, 2) ||
@@ -231,7 +231,9 @@ TriangleMesh::TriangleMesh(Index num_vertices, FaceArray faces)
       }
       return chosen;
     };
-    auto other_end = [&](Index e, Index v) { return m_edges(e, 0) == v ? m_edges(e, 1) : m_edges(e, 0); };
+    auto other_end = [&](Index e, Index v) {
+      return m_edges(e, 0) == v ? m_edges(e, 1) : m_edges(e, 0);
+    };
     std::vector<Index> backward;
     m_loop_vertices.reserve(num_boundary);
     for (Index start_edge = 0; start_edge < ne; ++start_edge) {

@@ -14,7 +14,7 @@ namespace tailor {
 /// What validation found in a mesh's connectivity. Errors make the constructor throw;
 /// the rest are warnings (real garments are often non-manifold).
 struct MeshValidation {
-  std::vector<Index> non_manifold_edges;   ///< edges with more than two incident faces
+  std::vector<Index> non_manifold_edges;     ///< edges with more than two incident faces
   std::vector<Index> unreferenced_vertices;  ///< vertices used by no face
   /// True when every edge has one or two faces and every vertex is used.
   bool is_manifold() const { return non_manifold_edges.empty(); }
@@ -32,8 +32,11 @@ class TriangleMesh {
   /// in validation().
   TriangleMesh(Index num_vertices, FaceArray faces);
 
+  /// Number of vertices (including unreferenced ones).
   Index num_vertices() const { return m_num_vertices; }
+  /// Number of triangles.
   Index num_faces() const { return static_cast<Index>(m_faces.rows()); }
+  /// Number of unique undirected edges.
   Index num_edges() const { return static_cast<Index>(m_edges.rows()); }
 
   /// Faces as given, one row of three vertex ids per face.
@@ -59,7 +62,10 @@ class TriangleMesh {
   bool is_boundary_edge(Index e) const { return edge_faces(e).size() == 1; }
   /// Number of boundary loops.
   Index num_boundary_loops() const { return static_cast<Index>(m_loop_offsets.size()) - 1; }
-  /// Vertices of boundary loop `i`, in walking order (first vertex not repeated).
+  /// Vertices of boundary loop `i`, in walking order (first vertex not repeated). Loops
+  /// follow the orientation of their faces where it is consistent, and use every boundary
+  /// edge exactly once. On a non-manifold or inconsistently oriented boundary a "loop" can
+  /// be an open chain (its last and first vertices are then not joined by a boundary edge).
   std::span<const Index> boundary_loop(Index i) const;
 
   /// Number of connected components (by shared vertices; isolated vertices not counted).

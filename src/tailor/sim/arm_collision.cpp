@@ -6,12 +6,81 @@
 #include <algorithm>
 
 namespace tailor {
+namespace {
+
+std::array<Eigen::Isometry3d, 2> bone_motion(const ArmSkeleton& s0, const ArmSkeleton& s1) {
+  return {s1.upper_arm * s0.upper_arm.inverse(), s1.forearm * s0.forearm.inverse()};
+}
+
+}  // namespace
+
+std::vector<ContactPlane> arm_contact_planes(const Arm& arm, const ArmSkeleton& skeleton0,
+                                             const ArmSkeleton& skeleton1, const Positions& x0,
+                                             const Eigen::VectorXd& masses, double h, double margin,
+                                             double activation, double stiffness_ratio,
+                                             const std::vector<char>& fixed,
+                                             std::vector<char>& released) {
+  std::vector<ContactPlane> planes;
+  const auto motion = bone_motion(skeleton0, skeleton1);
+  for (Eigen::Index i = 0; i < x0.rows(); ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (!fixed.empty() && fixed[k] != 0) continue;
+    const Vec3 p = x0.row(i).transpose();
+    const ArmDistance d0 = arm.distance(skeleton0, p);
+    if (d0.distance > margin + activation) {
+      released[k] = 0;  // away from the arm: the next touch is a new contact
+      continue;
+    }
+    if (released[k] != 0) continue;
+    const Vec3 carried = motion[static_cast<std::size_t>(d0.bone)] * p;
+    const ArmDistance d1 = arm.distance(skeleton1, carried);
+    ContactPlane c;
+    c.vertex = static_cast<Index>(i);
+    c.normal = d1.normal;
+    c.point = carried + (margin - d1.distance) * d1.normal;
+    c.stiffness = stiffness_ratio * masses[i] / (h * h);
+    planes.push_back(c);
+  }
+  return planes;
+}
+
+std::int64_t finish_arm_contacts(const std::vector<ContactPlane>& planes, const Arm& arm,
+                                 const ArmSkeleton& skeleton0, const ArmSkeleton& skeleton1,
+                                 const Positions& x0, Positions& x1, const Eigen::VectorXd& masses,
+                                 double h, double friction, std::vector<char>& released) {
+  std::int64_t pushing = 0;
+  const auto motion = bone_motion(skeleton0, skeleton1);
+  for (const ContactPlane& c : planes) {
+    const Index i = c.vertex;
+    Vec3 p = x1.row(i).transpose();
+    const double s = c.normal.dot(p - c.point);
+    if (s > 0) {
+      released[static_cast<std::size_t>(i)] = 1;
+      continue;
+    }
+    ++pushing;
+    if (friction <= 0) continue;
+    // The spring's normal impulse h k (-s), as a position change h² k (-s) / m.
+    const double normal_shift = h * h * c.stiffness * (-s) / masses[i];
+    const Vec3 x0i = x0.row(i).transpose();
+    const ArmDistance d0 = arm.distance(skeleton0, x0i);
+    const Vec3 carried = motion[static_cast<std::size_t>(d0.bone)] * x0i;
+    Vec3 slip = p - carried;
+    slip -= slip.dot(c.normal) * c.normal;
+    const double len = slip.norm();
+    if (len > 0) p -= std::min(1.0, friction * normal_shift / len) * slip;
+    x1.row(i) = p.transpose();
+  }
+  return pushing;
+}
 
 ArmCollisionStats project_out_of_arm(const Arm& arm, const ArmSkeleton& skeleton0,
                                      const ArmSkeleton& skeleton1, const Positions& x0,
                                      Positions& x1, double margin, double friction,
-                                     const std::vector<char>& fixed) {
+                                     const std::vector<char>& fixed,
+                                     std::vector<Index>* projected_ids) {
   ArmCollisionStats stats;
+  if (projected_ids != nullptr) projected_ids->clear();
   const std::array<Eigen::Isometry3d, 2> motion = {
       skeleton1.upper_arm * skeleton0.upper_arm.inverse(),
       skeleton1.forearm * skeleton0.forearm.inverse()};
@@ -38,6 +107,7 @@ ArmCollisionStats project_out_of_arm(const Arm& arm, const ArmSkeleton& skeleton
     }
     if (moved) {
       ++stats.projected;
+      if (projected_ids != nullptr) projected_ids->push_back(static_cast<Index>(i));
       x1.row(i) = p.transpose();
     }
   }

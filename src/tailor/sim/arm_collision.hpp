@@ -11,6 +11,7 @@
 
 #include "tailor/geometry/types.hpp"
 #include "tailor/scene/arm.hpp"
+#include "tailor/sim/cloth_model.hpp"
 
 namespace tailor {
 
@@ -20,6 +21,27 @@ struct ArmCollisionStats {
   double max_depth = 0;        ///< deepest penetration below the margin (m)
 };
 
+/// Contact springs for the implicit solve: every vertex not `fixed` and not `released`
+/// that is within `margin + activation` of the implicit arm of `skeleton0` gets a plane
+/// `margin` outside the arm of `skeleton1`, carried along by the nearer bone's motion.
+/// The spring stiffness is `stiffness_ratio * masses[i] / h²`. Vertices farther away
+/// are cleared from `released`.
+std::vector<ContactPlane> arm_contact_planes(const Arm& arm, const ArmSkeleton& skeleton0,
+                                             const ArmSkeleton& skeleton1, const Positions& x0,
+                                             const Eigen::VectorXd& masses, double h, double margin,
+                                             double activation, double stiffness_ratio,
+                                             const std::vector<char>& fixed,
+                                             std::vector<char>& released);
+
+/// After the solve: a plane whose spring pulled its vertex towards the arm marks the
+/// vertex `released` (it is leaving); one that pushed applies Coulomb friction to the
+/// vertex's slip relative to the arm, within `friction` times the normal correction.
+/// Returns the number of pushing contacts.
+std::int64_t finish_arm_contacts(const std::vector<ContactPlane>& planes, const Arm& arm,
+                                 const ArmSkeleton& skeleton0, const ArmSkeleton& skeleton1,
+                                 const Positions& x0, Positions& x1, const Eigen::VectorXd& masses,
+                                 double h, double friction, std::vector<char>& released);
+
 /// Moves every vertex of `x1` not flagged in `fixed` (may be empty) to at least
 /// `margin` outside the implicit arm of `skeleton1`, and reduces its tangential motion
 /// relative to the arm (the rigid motion of the nearer bone from `skeleton0` to
@@ -27,6 +49,7 @@ struct ArmCollisionStats {
 ArmCollisionStats project_out_of_arm(const Arm& arm, const ArmSkeleton& skeleton0,
                                      const ArmSkeleton& skeleton1, const Positions& x0,
                                      Positions& x1, double margin, double friction,
-                                     const std::vector<char>& fixed);
+                                     const std::vector<char>& fixed,
+                                     std::vector<Index>* projected_ids = nullptr);
 
 }  // namespace tailor

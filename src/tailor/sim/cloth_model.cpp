@@ -343,7 +343,8 @@ ClothEnergy ClothModel::energy(const Positions& x, const Positions& v, const Vec
 }
 
 ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0, const Positions& pinned_targets,
-                               const Vec3& gravity, double h, Positions& x1, Positions& v1) {
+                               const Vec3& gravity, double h, Positions& x1, Positions& v1,
+                               const std::vector<ContactPlane>& contacts) {
   Impl& m = *m_impl;
   const Index n = 3 * m.nv;
   if (x0.rows() != m.nv || v0.rows() != m.nv) {
@@ -378,6 +379,16 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0, const P
   for (int k = 0; k < A.nonZeros(); ++k) values[k] *= s;
   for (Index i = 0; i < m.nv; ++i) {
     for (int c = 0; c < 3; ++c) values[m.diagonal_index[static_cast<std::size_t>(3 * i + c)]] += (1 + h * alpha) * m.masses[i];
+  }
+
+  // Contact springs: A += h² k n nᵀ, b += h (f0 - h k n (n·v0)), f0 = -k n (n·(x0 - q)).
+  for (const ContactPlane& c : contacts) {
+    const Index i = c.vertex;
+    if (i < 0 || i >= m.nv || m.is_pinned[static_cast<std::size_t>(i)] != 0) continue;
+    const Vec3 xi = row3(x0, i), vi = row3(v0, i);
+    const Vec3 rhs = h * (-c.stiffness * c.normal.dot(xi - c.point) - h * c.stiffness * c.normal.dot(vi)) * c.normal;
+    for (int a = 0; a < 3; ++a) b[3 * i + a] += rhs[a];
+    m.add_block(values, i, i, (h * h * c.stiffness) * c.normal * c.normal.transpose());
   }
 
   // Pinned vertices: known velocity change, eliminated symmetrically.

@@ -33,6 +33,17 @@ struct ClothEnergy {
   double total() const { return kinetic + gravity + membrane + bending; }
 };
 
+/// A one-step contact constraint, as a stiff spring (penalty, handled implicitly) that
+/// holds `vertex` on the plane through `point` with unit `normal`, so the solve knows the
+/// vertex cannot move into the obstacle (Baraff & Witkin 1998 constrain such vertices
+/// too; a spring keeps the system a plain SPD solve).
+struct ContactPlane {
+  Index vertex = -1;
+  Vec3 normal = Vec3::UnitY();
+  Vec3 point = Vec3::Zero();
+  double stiffness = 0;  ///< N/m
+};
+
 /// Linear solver of the implicit step.
 enum class ClothSolver {
   automatic,  ///< direct up to ClothModel::kDirectSolveLimit unknowns, else iterative
@@ -75,9 +86,11 @@ class ClothModel {
 
   /// One linearised implicit Euler step of length `h` from (x0, v0): writes the
   /// candidate end positions `x1` and velocities `v1`. Pinned vertex `pinned()[i]` ends at
-  /// `pinned_targets.row(i)`. `gravity` is the acceleration (m/s²).
+  /// `pinned_targets.row(i)`. `gravity` is the acceleration (m/s²). `contacts` (free
+  /// vertices only) add their springs to this step only.
   ClothStepInfo step(const Positions& x0, const Positions& v0, const Positions& pinned_targets,
-                     const Vec3& gravity, double h, Positions& x1, Positions& v1);
+                     const Vec3& gravity, double h, Positions& x1, Positions& v1,
+                     const std::vector<ContactPlane>& contacts = {});
 
   /// Membrane plus bending energy of positions `x` (J).
   double elastic_energy(const Positions& x) const;

@@ -16,6 +16,11 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+/// Cloth vertices are kept this many contact thicknesses outside the implicit arm.
+constexpr double kArmMarginFactor = 1.5;
+/// Arm contact springs are this many times stiffer than a vertex's inertia (m / h²).
+constexpr double kArmContactStiffness = 1e3;
+
 double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
@@ -35,6 +40,7 @@ void to_json(nlohmann::json& j, const StepRecord& r) {
       {"impulse_iterations", c.impulse_iterations},
       {"impact_zones", c.impact_zones},
       {"last_resort", c.last_resort},
+      {"arm_contacts", r.arm_contacts},
       {"arm_projected", r.arm_projected},
       {"solver", {{"direct", r.cloth.direct}, {"iterations", r.cloth.iterations},
                   {"residual", r.cloth.residual}, {"ok", r.cloth.ok}}},
@@ -54,6 +60,8 @@ struct Simulation::Impl {
   std::vector<Index> pinned;
   Positions pinned_rest;
   std::vector<char> fixed;
+  std::vector<char> released;      // arm contacts let go (their spring pulled last step)
+  std::vector<Index> projected_ids;
   Positions x, v, y;
   ArmSkeleton skeleton;
   int frame = 0;
@@ -78,6 +86,7 @@ struct Simulation::Impl {
       pinned_rest.row(static_cast<Eigen::Index>(i)) = sleeve.rest.row(pinned[i]);
       fixed[static_cast<std::size_t>(pinned[i])] = 1;
     }
+    released.assign(fixed.size(), 0);
     x = sleeve.rest;
     v = Positions::Zero(x.rows(), 3);
     const ArmPose pose0 = scene.gesture().pose_at(0.0);
@@ -112,10 +121,18 @@ struct Simulation::Impl {
     Positions y1 = arm.skin(pose1);
     const Positions targets = arm.skin_points(pinned_rest, pose1);
 
+    // Cloth on the arm: contact springs in the solve, friction, then a safety projection.
+    const double margin = kArmMarginFactor * config.contact.thickness;
+    const std::vector<ContactPlane> planes =
+        arm_contact_planes(arm, skeleton, skeleton1, x, cloth.masses(), h, margin, 0.5 * margin,
+                           kArmContactStiffness, fixed, released);
     Positions x1, v1;
-    record.cloth = cloth.step(x, v, targets, config.gravity, h, x1, v1);
+    record.cloth = cloth.step(x, v, targets, config.gravity, h, x1, v1, planes);
+    record.arm_contacts = finish_arm_contacts(planes, arm, skeleton, skeleton1, x, x1, cloth.masses(),
+                                              h, config.contact.friction, released);
     const ArmCollisionStats arm_stats = project_out_of_arm(
-        arm, skeleton, skeleton1, x, x1, 1.5 * config.contact.thickness, config.contact.friction, fixed);
+        arm, skeleton, skeleton1, x, x1, margin, config.contact.friction, fixed, &projected_ids);
+    for (Index i : projected_ids) released[static_cast<std::size_t>(i)] = 0;
     record.arm_projected = arm_stats.projected;
     record.forces_solve_ms = ms_since(step_start);
 

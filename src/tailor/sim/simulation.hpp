@@ -34,7 +34,8 @@ struct StepRecord {
   int substep = 0;        ///< 0-based within the frame
   double time = 0;        ///< simulated time at the end of the substep (s)
   ClothStepInfo cloth;    ///< the implicit solve
-  std::int64_t arm_projected = 0;  ///< vertices moved out of the implicit arm
+  std::int64_t arm_contacts = 0;   ///< vertices held on the implicit arm by contact springs
+  std::int64_t arm_projected = 0;  ///< vertices moved out of the implicit arm afterwards
   ContactStats contact;   ///< the contact solver (self-collisions, impulses, zones, detection)
   bool checked = false;   ///< whether the static check ran
   std::int64_t self_intersections = 0;      ///< cloth-cloth (adjacent included), if checked
