@@ -24,8 +24,8 @@ using Bern = std::array<Interval, 4>;
 /// Subintervals this narrow (2^-20 < 1e-6) locate the time of impact well enough.
 constexpr double kToiWidth = 0x1p-20;
 /// Work limits before giving the query to the exact path.
-constexpr int kMaxDepth = 40;
-constexpr int kMaxNodes = 200;
+constexpr int kMaxDepth = 36;
+constexpr int kMaxNodes = 128;
 
 /// Coordinates beyond this (or non-finite) go to the exact path: keeps every interval
 /// product finite, so no NaN can arise.

@@ -10,7 +10,7 @@
 ///            "elbow_radius": 0.037, "wrist_radius": 0.027, "elbow_blend": 0.05,
 ///            "rings": 40, "segments": 24, "cap_rings": 5 },
 ///   "gesture": { "name": "elbow", "max_flexion_deg": 130, "speed": 1.0, "settle_time": 0.3 },
-///   "sleeve": { "rings": 21, "segments": 33, "slack": 0.03, "start": 0.02, "length": 0.5,
+///   "sleeve": { "rings": 21, "segments": 33, "slack": 0.03, "start": 0.02, "length": 0.53,
 ///               "material": { "density": 0.15, "stretch_stiffness": 500, "shear_stiffness": 50,
 ///                             "bending_stiffness": 1e-5, "stiffness_damping": 0.002,
 ///                             "air_damping": 0.2 } },

@@ -18,7 +18,7 @@ struct SleeveParams {
   int segments = 33;     ///< vertices around each ring (≥ 3)
   double slack = 0.03;   ///< radius beyond the arm's (m)
   double start = 0.02;   ///< rest-pose abscissa of the shoulder end (m from the shoulder joint)
-  double length = 0.50;  ///< along the arm (m)
+  double length = 0.53;  ///< along the arm (m)
 };
 
 /// An open tube. Vertex `r * segments + j` is vertex `j` of ring `r`; ring 0 is the

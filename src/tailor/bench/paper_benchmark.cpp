@@ -1,0 +1,194 @@
+#include "tailor/bench/paper_benchmark.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <numeric>
+
+#include "tailor/bench/svg_plot.hpp"
+#include "tailor/geometry/error.hpp"
+#include "tailor/sim/simulation.hpp"
+
+namespace tailor {
+namespace {
+
+// The high-level configurations of Fig. 1 that are not rows of Table 1: `basic` is
+// Table 1's basic, `isolated_set` is Table 1's paper (same high-level stages).
+DetectionConfig high_level(bool cones, bool radial) {
+  DetectionConfig config = DetectionConfig::preset("basic");
+  config.normal_cones = config.contour_test = cones;
+  config.radial_view = radial;
+  return config;
+}
+
+template <class T>
+double mean(const std::vector<T>& values) {
+  if (values.empty()) return 0;
+  return std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
+}
+
+void write_file(const std::filesystem::path& path, const std::string& text) {
+  const std::filesystem::path temporary = path.string() + ".tmp";
+  {
+    std::ofstream file(temporary);
+    if (!file) throw InputError(fmt::format("{}: cannot write", temporary.string()));
+    file << text;
+  }
+  std::filesystem::rename(temporary, path);
+}
+
+PlotSeries per_step(const std::string& name, const std::vector<std::int64_t>& values) {
+  PlotSeries series;
+  series.name = name;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    series.x.push_back(static_cast<double>(i));
+    series.y.push_back(static_cast<double>(values[i]));
+  }
+  return series;
+}
+
+}  // namespace
+
+const PaperRun& PaperBenchmark::run(const std::string& name) const {
+  for (const PaperRun& r : runs) {
+    if (r.name == name) return r;
+  }
+  throw std::out_of_range("no run " + name);
+}
+
+std::string PaperBenchmark::fig1_csv() const {
+  const auto& a = run("basic").ctps;
+  const auto& b = run("normal_cones").ctps;
+  const auto& c = run("radial_view").ctps;
+  const auto& d = run("paper").ctps;
+  std::string csv = "step,basic,normal_cones,radial_view,isolated_set\n";
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    csv += fmt::format("{},{},{},{},{}\n", i, a[i], b[i], c[i], d[i]);
+  }
+  return csv;
+}
+
+std::string PaperBenchmark::fig1_markdown() const {
+  std::string md =
+      "| high-level culling | mean CTPs per step | max |\n|---|---:|---:|\n";
+  for (const auto& [label, name] : std::vector<std::pair<std::string, std::string>>{
+           {"basic BVH", "basic"},
+           {"+ normal cones", "normal_cones"},
+           {"+ radial view", "radial_view"},
+           {"+ isolated set", "paper"}}) {
+    const auto& ctps = run(name).ctps;
+    md += fmt::format("| {} | {:.1f} | {} |\n", label, mean(ctps),
+                      ctps.empty() ? 0 : *std::max_element(ctps.begin(), ctps.end()));
+  }
+  return md;
+}
+
+std::string PaperBenchmark::table1_csv() const {
+  std::string csv = "method,vf,ee,detect_ms,step_ms,fps\n";
+  for (const std::string name : {"basic", "curtis", "tang", "paper"}) {
+    const PaperRun& r = run(name);
+    csv += fmt::format("{},{:.1f},{:.1f},{:.3f},{:.3f},{:.2f}\n", name, mean(r.vf), mean(r.ee),
+                       mean(r.detect_ms), mean(r.step_ms), r.fps());
+  }
+  return csv;
+}
+
+std::string PaperBenchmark::table1_markdown() const {
+  struct Published {
+    const char* name;
+    double vf, ee, fps;
+  };
+  const Published published[] = {
+      {"basic", 1122, 2056, 12.70}, {"curtis", 74, 45, 32}, {"tang", 44, 338, 37.54},
+      {"paper", 31, 137, 34.22}};
+  std::string md =
+      "| method | VF (ours) | EE (ours) | detect ms | step ms | fps (ours) | VF (paper) | "
+      "EE (paper) | fps (paper) |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const Published& p : published) {
+    const PaperRun& r = run(p.name);
+    md += fmt::format("| {} | {:.1f} | {:.1f} | {:.3f} | {:.3f} | {:.2f} | {} | {} | {} |\n",
+                      p.name, mean(r.vf), mean(r.ee), mean(r.detect_ms), mean(r.step_ms),
+                      r.fps(), p.vf, p.ee, p.fps);
+  }
+  return md;
+}
+
+void PaperBenchmark::write(const std::filesystem::path& dir) const {
+  std::filesystem::create_directories(dir);
+  write_file(dir / "fig1.csv", fig1_csv());
+  write_file(dir / "fig1.md", fig1_markdown());
+  write_file(dir / "table1.csv", table1_csv());
+  write_file(dir / "table1.md", table1_markdown());
+  LinePlot fig1;
+  fig1.title = "Candidate triangle pairs per step (elbow gesture)";
+  fig1.x_label = "step";
+  fig1.y_label = "CTPs";
+  fig1.series = {per_step("basic BVH", run("basic").ctps),
+                 per_step("+ normal cones", run("normal_cones").ctps),
+                 per_step("+ radial view", run("radial_view").ctps),
+                 per_step("+ isolated set", run("paper").ctps)};
+  fig1.write(dir / "fig1.svg");
+  LinePlot pairs;
+  pairs.title = "VF + EE pairs reaching the exact CCD per step";
+  pairs.x_label = "step";
+  pairs.y_label = "pairs";
+  for (const std::string name : {"basic", "curtis", "tang", "paper"}) {
+    const PaperRun& r = run(name);
+    std::vector<std::int64_t> sum(r.vf.size());
+    for (std::size_t i = 0; i < sum.size(); ++i) sum[i] = r.vf[i] + r.ee[i];
+    pairs.series.push_back(per_step(name, sum));
+  }
+  pairs.write(dir / "table1.svg");
+}
+
+PaperBenchmark run_paper_benchmark(
+    const SceneConfig& scene, const std::function<void(const std::string&, int, int)>& progress) {
+  PaperBenchmark bench;
+  const std::vector<std::pair<std::string, DetectionConfig>> configs{
+      {"basic", DetectionConfig::preset("basic")},
+      {"curtis", DetectionConfig::preset("curtis")},
+      {"tang", DetectionConfig::preset("tang")},
+      {"paper", DetectionConfig::preset("paper")},
+      {"normal_cones", high_level(true, false)},
+      {"radial_view", high_level(true, true)}};
+  for (const auto& [name, config] : configs) {
+    PaperRun run;
+    run.name = name;
+    run.config = config;
+    SimulationOptions options;
+    options.detection = config;
+    Simulation simulation(scene, options);
+    for (int frame = 0; frame < scene.frames; ++frame) {
+      for (const StepRecord& step : simulation.step_frame()) {
+        const DetectionStats& d = step.contact.detection;
+        run.ctps.push_back(d.candidate_triangle_pairs);
+        run.vf.push_back(d.vf_tested);
+        run.ee.push_back(d.ee_tested);
+        run.self_collisions.push_back(step.contact.self_collisions);
+        run.detect_ms.push_back(step.detection_ms);
+        run.step_ms.push_back(step.step_ms);
+      }
+      if (progress) progress(name, frame + 1, scene.frames);
+    }
+    run.frames = scene.frames;
+    run.wall_seconds = simulation.totals().wall_seconds;
+    if (!bench.runs.empty() && bench.same_collisions) {
+      const PaperRun& first = bench.runs.front();
+      for (std::size_t i = 0; i < std::min(first.self_collisions.size(),
+                                           run.self_collisions.size());
+           ++i) {
+        if (first.self_collisions[i] != run.self_collisions[i]) {
+          bench.same_collisions = false;
+          bench.mismatch = fmt::format("step {}: {} found {} self-collisions, {} found {}", i,
+                                       first.name, first.self_collisions[i], name,
+                                       run.self_collisions[i]);
+          break;
+        }
+      }
+    }
+    bench.runs.push_back(std::move(run));
+  }
+  return bench;
+}
+
+}  // namespace tailor
