@@ -116,6 +116,9 @@ const CommandRegistration registration{
           ->add_option("--truth", *truths,
                        "JSON array of booleans (mma_bool) for a file without a truth column; "
                        "repeat it, one per such file, in the order of those files")
+          ->expected(1)
+          ->allow_extra_args(false)
+          ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
           ->check(CLI::ExistingFile);
       command->footer(
           "Prints one line per file and a total (queries, colliding, false negatives, false "

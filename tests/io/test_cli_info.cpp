@@ -30,8 +30,12 @@ RunResult run_cli(const std::string& arguments) {
   return result;
 }
 
+/// Single-quotes a path for the shell (appends piecewise: GCC 12 warns on "'" + string&&).
 std::string quoted(const std::filesystem::path& path) {
-  return "'" + path.string() + "'";
+  std::string text = "'";
+  text += path.string();
+  text += '\'';
+  return text;
 }
 
 TEST(CliInfo, ReferenceMesh) {

@@ -95,9 +95,9 @@ TEST(Arm, ElbowFlexionMovesTheWristForward) {
   }
 }
 
-TEST(Arm, SkinnedSurfaceStaysInsideThePosedImplicitArm) {
+TEST(Arm, SkinnedSurfaceStaysWithinOneAndAHalfMillimetresOfThePosedImplicitArm) {
   const Arm arm;
-  for (const double flex : {45.0, 90.0, 130.0}) {
+  for (double flex = 0; flex <= 150; flex += 10) {
     ArmPose pose;
     pose.elbow_flexion = deg(flex);
     pose.shoulder_raise = deg(30);
@@ -105,7 +105,9 @@ TEST(Arm, SkinnedSurfaceStaysInsideThePosedImplicitArm) {
     const ArmSkeleton s = arm.skeleton(pose);
     const Positions y = arm.skin(pose);
     for (Eigen::Index i = 0; i < y.rows(); ++i) {
-      ASSERT_LE(arm.signed_distance(s, y.row(i).transpose()), 1e-9) << "flexion " << flex << " vertex " << i;
+      // The blend pulls vertices inwards but not exactly: up to ~1.3 mm out, inside
+      // the 3 mm the cloth is kept from the implicit arm.
+      ASSERT_LE(arm.signed_distance(s, y.row(i).transpose()), 1.5e-3) << "flexion " << flex << " vertex " << i;
     }
   }
 }

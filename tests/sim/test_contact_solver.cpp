@@ -108,7 +108,7 @@ TEST(ContactSolver, TwoPatchesDrivenThroughEachOther) {
   // 2 cm down in one step, straight through A.
   Positions x0(0, 3);
   std::vector<std::array<Index, 3>> faces;
-  const int n = 9;
+  const int n = sanitized() ? 6 : 9;
   add_grid(n, n, [&](int i, int j) { return Vec3(i / (n - 1.0), j / (n - 1.0), 0.0); }, x0, faces);
   const Index b_first = static_cast<Index>(x0.rows());
   add_grid(n, n, [&](int i, int j) { return Vec3(0.1 + 0.8 * i / (n - 1.0), 0.05 + 0.8 * j / (n - 1.0), 0.01); }, x0, faces);
@@ -147,7 +147,7 @@ TEST(ContactSolver, FoldedStripPressedFlat) {
   // A strip folded into a U (radius 1 cm); over several substeps the upper layer is pushed
   // down through the lower one, which is pinned along its far end.
   const double r = 0.01, len = 0.3;
-  const int nu = 40, nv = 5;
+  const int nu = sanitized() ? 24 : 40, nv = sanitized() ? 3 : 5;
   const double total = 2 * len + std::numbers::pi * r;
   const auto place = [&](int i, int j) {
     const double u = total * i / (nu - 1.0), y = 0.1 * j / (nv - 1.0);
@@ -171,7 +171,7 @@ TEST(ContactSolver, FoldedStripPressedFlat) {
   }
   ContactSolver solver(mesh, x, masses, DetectionConfig::preset("paper"), params_for_tests());
   std::int64_t collisions = 0;
-  const int steps = sanitized() ? 3 : 8;
+  const int steps = sanitized() ? 2 : 8;
   for (int step = 0; step < steps; ++step) {
     Positions x1 = x;
     for (int i = 0; i < nu; ++i) {
@@ -257,10 +257,10 @@ void cloth_on_rising_box(int impulse_passes, int zone_passes, bool expect_rest, 
   }
 }
 
-TEST(ContactSolver, ClothFallingOntoARisingBox) { cloth_on_rising_box(10, 50, true, sanitized() ? 6 : 20); }
+TEST(ContactSolver, ClothFallingOntoARisingBox) { cloth_on_rising_box(10, 50, true, sanitized() ? 4 : 20); }
 
 TEST(ContactSolver, ClothOnRisingBoxZonesAndLastResort) {
-  const int steps = sanitized() ? 5 : 8;
+  const int steps = sanitized() ? 3 : 8;
   cloth_on_rising_box(1, 50, false, steps);  // impact zones with arm-following kinematic vertices
   cloth_on_rising_box(1, 0, false, steps);   // last resort: vertices follow the box
 }

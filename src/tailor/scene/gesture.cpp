@@ -93,11 +93,11 @@ Gesture make_gesture(const GestureParams& params) {
     out.forearm_twist = deg(-70);
     out.humeral_rotation = deg(30);
     key(0.0, rest);
-    key(0.6, bent);
-    key(1.1, in);
-    key(1.7, out);
-    key(2.2, bent);
-    key(2.7, rest);
+    key(0.5, bent);
+    key(0.95, in);
+    key(1.45, out);
+    key(1.9, bent);
+    key(2.3, rest);
   } else {
     throw InputError(fmt::format("unknown gesture '{}' (known: {})", params.name,
                                  fmt::join(gesture_names(), ", ")));

@@ -32,6 +32,56 @@ struct Hinge {
   double rest_angle = 0;
 };
 
+/// Block-Jacobi preconditioner for Eigen's CG: inverts the 3x3 diagonal blocks, which
+/// holds a vertex's mass, its own stiffness and its contact spring exactly.
+class BlockJacobi {
+ public:
+  using StorageIndex = int;
+  enum { ColsAtCompileTime = Eigen::Dynamic, MaxColsAtCompileTime = Eigen::Dynamic };
+
+  BlockJacobi() = default;
+  template <typename M>
+  explicit BlockJacobi(const M& m) {
+    compute(m);
+  }
+  template <typename M>
+  BlockJacobi& analyzePattern(const M&) {
+    return *this;
+  }
+  template <typename M>
+  BlockJacobi& factorize(const M& m) {
+    return compute(m);
+  }
+  template <typename M>
+  BlockJacobi& compute(const M& m) {
+    const Eigen::Index n = m.rows() / 3;
+    m_inverse.assign(static_cast<std::size_t>(n), Mat3::Zero());
+    for (Eigen::Index col = 0; col < m.outerSize(); ++col) {
+      for (typename M::InnerIterator it(m, col); it; ++it) {
+        if (it.row() / 3 == col / 3) m_inverse[static_cast<std::size_t>(col / 3)](it.row() % 3, col % 3) = it.value();
+      }
+    }
+    for (Mat3& block : m_inverse) {
+      bool invertible = false;
+      Mat3 inverse;
+      block.computeInverseWithCheck(inverse, invertible);
+      block = invertible ? inverse : Mat3::Identity();
+    }
+    return *this;
+  }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const {
+    Eigen::VectorXd x(b.size());
+    for (std::size_t i = 0; i < m_inverse.size(); ++i) {
+      x.segment<3>(static_cast<Eigen::Index>(3 * i)) = m_inverse[i] * b.segment<3>(static_cast<Eigen::Index>(3 * i));
+    }
+    return x;
+  }
+  Eigen::ComputationInfo info() const { return Eigen::Success; }
+
+ private:
+  std::vector<Mat3> m_inverse;
+};
+
 double wrap_angle(double a) {
   while (a > std::numbers::pi) a -= 2 * std::numbers::pi;
   while (a <= -std::numbers::pi) a += 2 * std::numbers::pi;
@@ -83,8 +133,7 @@ struct ClothModel::Impl {
 
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
   bool ldlt_analyzed = false;
-  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper,
-                           Eigen::DiagonalPreconditioner<double>> cg;
+  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, BlockJacobi> cg;
   Eigen::VectorXd last_dv;
   ClothSolver solver = ClothSolver::automatic;
   double cg_tolerance = 1e-6;

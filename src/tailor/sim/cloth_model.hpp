@@ -48,7 +48,7 @@ struct ContactPlane {
 enum class ClothSolver {
   automatic,  ///< direct up to ClothModel::kDirectSolveLimit unknowns, else iterative
   direct,     ///< sparse LDLT (exact)
-  iterative,  ///< conjugate gradient, Jacobi preconditioner, warm-started
+  iterative,  ///< conjugate gradient, block-Jacobi preconditioner, warm-started
 };
 
 /// What one implicit step did.

@@ -564,7 +564,12 @@ struct ContactSolver::Impl {
   /// Bridson-style repulsion of cloth VF and EE pairs closer than the thickness at t1.
   std::int64_t cloth_proximity(Positions& x1) {
     const double h = params.thickness;
-    const Bvh faces(cloth_face_boxes(x1, x1, 0.5 * h));
+    const std::vector<Aabb> face_boxes = cloth_face_boxes(x1, x1, 0.5 * h);
+    const Bvh faces(face_boxes);
+    std::vector<Aabb> edge_boxes(static_cast<std::size_t>(cloth.num_edges()));
+    for (Index e = 0; e < cloth.num_edges(); ++e) {
+      for (int k = 0; k < 2; ++k) edge_boxes[e].extend(point_box(row(x1, cloth.edges()(e, k)), row(x1, cloth.edges()(e, k)), 0.5 * h));
+    }
     struct Pair {
       int kind;  // 0: VF (vertex, face), 1: EE (edge, edge)
       Index a, b;
@@ -573,12 +578,16 @@ struct ContactSolver::Impl {
     };
     std::vector<Pair> pairs;
     const auto& F = cloth.faces();
+    // Candidate feature pairs: their boxes, each grown by h/2, overlap (exact prefilter
+    // for "closer than h").
     faces.for_each_self_overlapping_pair([&](Index f, Index g) {
       for (int pass = 0; pass < 2; ++pass) {
         const Index p = pass == 0 ? f : g, q = pass == 0 ? g : f;
         for (int k = 0; k < 3; ++k) {
           const Index v = F(p, k);
-          if (v != F(q, 0) && v != F(q, 1) && v != F(q, 2)) pairs.push_back({0, v, q});
+          if (v == F(q, 0) || v == F(q, 1) || v == F(q, 2)) continue;
+          if (!face_boxes[q].overlaps(point_box(row(x1, v), row(x1, v), 0.5 * h))) continue;
+          pairs.push_back({0, v, q});
         }
       }
       const auto ef = cloth.face_edges(f), eg = cloth.face_edges(g);
@@ -586,6 +595,7 @@ struct ContactSolver::Impl {
         for (Index d : eg) {
           const auto E = cloth.edges().row(e), D = cloth.edges().row(d);
           if (E(0) == D(0) || E(0) == D(1) || E(1) == D(0) || E(1) == D(1)) continue;
+          if (!edge_boxes[e].overlaps(edge_boxes[d])) continue;
           pairs.push_back({1, std::min(e, d), std::max(e, d)});
         }
       }

@@ -1,0 +1,237 @@
+/// @file
+/// The arm-sleeve simulation: short runs of every gesture at low resolution, and the
+/// `tailor simulate` command's files (including Ctrl-C).
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+
+#include "tailor/sim/frame_writer.hpp"
+#include "tailor/sim/simulation.hpp"
+
+extern char** environ;
+
+namespace tailor {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool sanitized() {
+  const char* s = std::getenv("TAILOR_SANITIZED");
+  return s != nullptr && std::string(s) == "1";
+}
+
+/// A small, fast version of the default scene: the gesture played faster.
+SceneConfig small_scene(const std::string& gesture) {
+  SceneConfig c;
+  c.sleeve.rings = 13;
+  c.sleeve.segments = 20;
+  c.gesture.name = gesture;
+  c.gesture.settle_time = 0.1;
+  c.gesture.speed = 2.0;
+  return c;
+}
+
+struct RunResult {
+  SimulationTotals totals;
+  double max_kinetic = 0;
+  double max_edge_ratio = 0;
+};
+
+RunResult run(const SceneConfig& config, int frames) {
+  SimulationOptions options;
+  options.check_intersections = true;  // after every substep
+  Simulation sim(config, options);
+  RunResult r;
+  const Positions& rest = sim.scene().sleeve().rest;
+  const EdgeArray& edges = sim.cloth_mesh().edges();
+  for (int f = 0; f < frames; ++f) {
+    sim.step_frame();
+    const Positions& x = sim.cloth_positions();
+    EXPECT_TRUE(x.allFinite()) << "frame " << f;
+    EXPECT_TRUE(sim.cloth_velocities().allFinite()) << "frame " << f;
+    if (!x.allFinite()) break;
+    r.max_kinetic = std::max(r.max_kinetic, sim.energy().kinetic);
+    for (Eigen::Index e = 0; e < edges.rows(); ++e) {
+      const double l = (x.row(edges(e, 0)) - x.row(edges(e, 1))).norm();
+      const double l0 = (rest.row(edges(e, 0)) - rest.row(edges(e, 1))).norm();
+      r.max_edge_ratio = std::max(r.max_edge_ratio, l / l0);
+    }
+    // The sleeve stays on the arm: within 0.8 m of the shoulder.
+    EXPECT_LT(x.rowwise().norm().maxCoeff(), 0.8) << "frame " << f;
+  }
+  r.totals = sim.totals();
+  return r;
+}
+
+void expect_sane(const RunResult& r, const SceneConfig& config) {
+  EXPECT_EQ(r.totals.intersections, 0);
+  EXPECT_EQ(r.totals.checked_steps, r.totals.steps);
+  EXPECT_EQ(r.totals.failed_solves, 0);
+  // Bounded energy: the sleeve (about 35 g) never moves on average faster than 3 m/s,
+  // and no edge stretches to more than five times its rest length.
+  const double mass = config.material.density * 0.5 * 0.45;
+  EXPECT_LT(r.max_kinetic, 0.5 * mass * 3.0 * 3.0);
+  EXPECT_LT(r.max_edge_ratio, 5.0);
+}
+
+TEST(Simulation, ElbowGestureMakesTheSleeveCollideWithItself) {
+  const SceneConfig c = small_scene("elbow");
+  // Peak flexion at 0.1 + 1.0 / 2 s = frame 18.
+  const RunResult r = run(c, sanitized() ? 18 : 24);
+  expect_sane(r, c);
+  EXPECT_GT(r.totals.self_collisions, 0);
+}
+
+TEST(Simulation, RaiseGesture) {
+  const SceneConfig c = small_scene("raise");
+  const RunResult r = run(c, sanitized() ? 8 : 20);
+  expect_sane(r, c);
+}
+
+TEST(Simulation, TwistGesture) {
+  const SceneConfig c = small_scene("twist");
+  const RunResult r = run(c, sanitized() ? 8 : 20);
+  expect_sane(r, c);
+}
+
+TEST(Simulation, PinnedRingFollowsTheArm) {
+  SceneConfig c = small_scene("raise");
+  SimulationOptions options;
+  options.contact = false;
+  Simulation sim(c, options);
+  for (int f = 0; f < 10; ++f) sim.step_frame();
+  const Scene& scene = sim.scene();
+  const ArmPose pose = scene.gesture().pose_at(sim.time());
+  const auto ring = scene.sleeve().ring(0);
+  Positions rest(static_cast<Eigen::Index>(ring.size()), 3);
+  for (std::size_t i = 0; i < ring.size(); ++i) rest.row(static_cast<Eigen::Index>(i)) = scene.sleeve().rest.row(ring[i]);
+  const Positions expected = scene.arm().skin_points(rest, pose);
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    EXPECT_LT((sim.cloth_positions().row(ring[i]) - expected.row(static_cast<Eigen::Index>(i))).norm(), 1e-12);
+  }
+  EXPECT_GT(pose.shoulder_raise, 0.1);  // the arm did move
+}
+
+TEST(Simulation, SummaryHasTheRequiredFields) {
+  Simulation sim(small_scene("elbow"));
+  sim.step_frame();
+  const nlohmann::json s = simulation_summary(sim, false);
+  for (const char* key : {"frames", "steps", "self_collisions", "intersections", "interrupted", "ms_per_step"}) {
+    EXPECT_TRUE(s.contains(key)) << key;
+  }
+  for (const char* key : {"forces_solve", "detection", "response", "total"}) {
+    EXPECT_TRUE(s["ms_per_step"].contains(key)) << key;
+  }
+  EXPECT_EQ(s["frames"], 1);
+  EXPECT_EQ(s["steps"], 5);
+}
+
+/// Runs the CLI with `args`; returns its exit status. If `interrupt_after` > 0, sends
+/// SIGINT after that many seconds.
+int run_cli(const std::vector<std::string>& args, double interrupt_after = 0) {
+  std::vector<std::string> all{TAILOR_CLI_PATH};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return -1;
+  if (interrupt_after > 0) {
+    std::this_thread::sleep_for(std::chrono::duration<double>(interrupt_after));
+    kill(pid, SIGINT);
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+nlohmann::json read_json(const fs::path& p) {
+  std::ifstream in(p);
+  return nlohmann::json::parse(in);
+}
+
+TEST(SimulateCommand, WritesFramesStepsAndSummary) {
+  const fs::path out = fs::temp_directory_path() / "tailor_test_simulate";
+  fs::remove_all(out);
+  const int frames = 3;
+  ASSERT_EQ(run_cli({"simulate", "--frames", std::to_string(frames), "--rings", "6", "--segments", "10",
+                     "--out", out.string(), "--check-intersections", "--threads", "1"}),
+            0);
+  for (int f = 0; f <= frames; ++f) {
+    EXPECT_TRUE(fs::exists(out / frame_file_name("cloth", f))) << f;
+    EXPECT_TRUE(fs::exists(out / frame_file_name("arm", f))) << f;
+  }
+  EXPECT_FALSE(fs::exists(out / frame_file_name("cloth", frames + 1)));
+  std::ifstream steps(out / "steps.jsonl");
+  std::string line;
+  int lines = 0;
+  while (std::getline(steps, line)) {
+    const auto j = nlohmann::json::parse(line);
+    EXPECT_TRUE(j.contains("detection"));
+    EXPECT_TRUE(j.contains("self_collisions"));
+    EXPECT_TRUE(j.contains("impulses"));
+    EXPECT_TRUE(j.contains("impact_zones"));
+    EXPECT_TRUE(j["ms"].contains("step"));
+    EXPECT_EQ(j["intersections"]["self"], 0);
+    ++lines;
+  }
+  EXPECT_EQ(lines, frames * 5);
+  const auto s = read_json(out / "summary.json");
+  EXPECT_EQ(s["frames"], frames);
+  EXPECT_EQ(s["steps"], frames * 5);
+  EXPECT_EQ(s["intersections"], 0);
+  EXPECT_EQ(s["interrupted"], false);
+  EXPECT_EQ(s["cloth"]["vertices"], 60);
+}
+
+TEST(SimulateCommand, RejectsBadInputWithExitCode2) {
+  EXPECT_EQ(run_cli({"simulate", "--method", "fastest", "--frames", "1"}), 2);
+  EXPECT_EQ(run_cli({"simulate", "--gesture", "wave", "--frames", "1"}), 2);
+  EXPECT_EQ(run_cli({"simulate", "--scene", "/nonexistent/scene.json"}), 2);
+}
+
+TEST(SimulateCommand, CtrlCStopsAfterTheFrameWithAValidSummary) {
+  const fs::path out = fs::temp_directory_path() / "tailor_test_simulate_sigint";
+  fs::remove_all(out);
+  const int status = run_cli({"simulate", "--frames", "100000", "--rings", "6", "--segments", "10",
+                              "--out", out.string(), "--threads", "1"},
+                             sanitized() ? 4.0 : 1.5);
+  EXPECT_EQ(status, 130);
+  ASSERT_TRUE(fs::exists(out / "summary.json"));
+  const auto s = read_json(out / "summary.json");
+  EXPECT_EQ(s["interrupted"], true);
+  const int frames = s["frames"];
+  EXPECT_GT(frames, 0);
+  EXPECT_LT(frames, 100000);
+  EXPECT_TRUE(fs::exists(out / frame_file_name("cloth", frames)));
+  EXPECT_FALSE(fs::exists(out / frame_file_name("cloth", frames + 1)));
+  // Every line of steps.jsonl is complete.
+  std::ifstream steps(out / "steps.jsonl");
+  std::string line;
+  int lines = 0;
+  while (std::getline(steps, line)) {
+    EXPECT_TRUE(nlohmann::json::accept(line)) << line;
+    ++lines;
+  }
+  EXPECT_EQ(lines, frames * 5);
+}
+
+}  // namespace
+}  // namespace tailor
