@@ -2,6 +2,7 @@
 // 10K to 1M triangles, 1 and 2 threads; refit alone is the floor.
 
 #include <benchmark/benchmark.h>
+#include <tbb/task_arena.h>
 
 #include <map>
 #include <memory>
