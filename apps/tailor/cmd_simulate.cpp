@@ -80,6 +80,13 @@ void print_table(const nlohmann::json& s) {
 }
 
 int run_simulate(const SimulateOptions& o) {
+  // Installed first, so a Ctrl-C during setup also ends after the first frame.
+  g_interrupted = 0;
+  const auto previous = std::signal(SIGINT, on_sigint);
+  struct RestoreSignal {
+    decltype(previous) handler;
+    ~RestoreSignal() { std::signal(SIGINT, handler); }
+  } restore{previous};
   SceneConfig config = o.scene.empty() ? SceneConfig{} : load_scene_config(o.scene);
   if (!o.gesture.empty()) config.gesture.name = o.gesture;
   if (o.frames >= 0) config.frames = o.frames;
@@ -106,8 +113,6 @@ int run_simulate(const SimulateOptions& o) {
                config.sleeve.segments, sim.cloth_mesh().num_vertices(), o.method, o.out);
 
   const bool tty = isatty(fileno(stderr)) != 0;
-  g_interrupted = 0;
-  auto previous = std::signal(SIGINT, on_sigint);
   bool interrupted = false;
   for (int f = 0; f < config.frames; ++f) {
     const auto& records = sim.step_frame();
@@ -123,7 +128,6 @@ int run_simulate(const SimulateOptions& o) {
       break;
     }
   }
-  std::signal(SIGINT, previous);
   if (tty) fmt::print(stderr, "\n");
   nlohmann::json summary = simulation_summary(sim, interrupted);
   summary["method"] = o.method;

@@ -62,7 +62,10 @@ void expect_same(const CollisionSet& expected, const CollisionSet& actual,
 class DetectorVsBruteForce : public ::testing::TestWithParam<unsigned> {};
 
 TEST_P(DetectorVsBruteForce, EveryStageCombinationEqualsBruteForce) {
-  const int resolution = sanitized() ? 14 : 24;  // ~1.1K triangles on the grids
+  // The sanitizer build checks memory safety on one small seed; the release build runs
+  // every seed at full size.
+  if (sanitized() && GetParam() != 1u) GTEST_SKIP() << "release build covers this seed";
+  const int resolution = sanitized() ? 10 : 24;  // ~1.1K triangles on the grids
   std::int64_t total_collisions = 0, total_ctps_basic = 0, total_ctps_culled = 0;
   for (const auto& step : testing::make_random_steps(GetParam(), resolution)) {
     const TriangleMesh mesh(static_cast<Index>(step.mesh.vertices.rows()), step.mesh.faces);
@@ -93,7 +96,7 @@ TEST_P(DetectorVsBruteForce, EveryStageCombinationEqualsBruteForce) {
 INSTANTIATE_TEST_SUITE_P(Seeds, DetectorVsBruteForce, ::testing::Values(1u, 2u, 3u));
 
 TEST(DetectorVsBruteForce, LargerMeshesWithPresets) {
-  const int resolution = sanitized() ? 24 : 70;  // ~10K triangles on the grids
+  const int resolution = sanitized() ? 12 : 70;  // ~10K triangles on the grids
   for (const auto& step : testing::make_random_steps(7, resolution)) {
     const TriangleMesh mesh(static_cast<Index>(step.mesh.vertices.rows()), step.mesh.faces);
     const CollisionSet truth = brute_force_self_collisions(mesh, step.mesh.vertices, step.x1);

@@ -144,6 +144,15 @@ TEST(Scene, ExposesSectionLoops) {
   const double spacing = scene.config().sleeve.length / 20;
   const double x = scene.sleeve().rest(rings[static_cast<std::size_t>(scene.elbow_ring())][0], 0);
   EXPECT_NEAR(x, scene.config().arm.upper_arm_length, 0.5 * spacing + 1e-12);
+  // Two observers, one on each side of the elbow.
+  const auto observers = scene.observer_loops();
+  ASSERT_EQ(observers.size(), 2u);
+  const double x_upper = scene.sleeve().rest(observers[0][0], 0);
+  const double x_fore = scene.sleeve().rest(observers[1][0], 0);
+  EXPECT_LT(x_upper, scene.config().arm.upper_arm_length);
+  EXPECT_GT(x_fore, scene.config().arm.upper_arm_length);
+  EXPECT_NEAR(x_upper, 0.5 * (0.02 + 0.30), 0.5 * spacing + 1e-12);
+  EXPECT_NEAR(x_fore, 0.5 * (0.30 + 0.55), 0.5 * spacing + 1e-12);
 }
 
 }  // namespace

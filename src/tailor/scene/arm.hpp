@@ -43,7 +43,9 @@ struct ArmPose {
 struct ArmSkeleton {
   Eigen::Isometry3d upper_arm = Eigen::Isometry3d::Identity();  ///< origin at the shoulder
   Eigen::Isometry3d forearm = Eigen::Isometry3d::Identity();    ///< origin at the elbow
+  /// Shoulder joint position.
   Vec3 shoulder() const { return upper_arm.translation(); }
+  /// Elbow joint position.
   Vec3 elbow() const { return forearm.translation(); }
   /// Wrist position for a forearm of length `forearm_length`.
   Vec3 wrist(double forearm_length) const { return forearm * Vec3(forearm_length, 0, 0); }
@@ -67,6 +69,7 @@ class Arm {
   /// non-positive sizes or a resolution below the minimum.
   explicit Arm(const ArmParams& params = {});
 
+  /// The parameters the arm was built with.
   const ArmParams& params() const { return m_params; }
   /// The surface mesh (fixed connectivity).
   const TriangleMesh& mesh() const { return *m_mesh; }

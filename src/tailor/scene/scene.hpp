@@ -78,6 +78,8 @@ class Scene {
   std::vector<std::vector<Index>> sleeve_rings() const { return m_sleeve.rings(); }
   /// Ring nearest to the elbow.
   Index elbow_ring() const { return m_sleeve.elbow_ring; }
+  /// Section loops of the two radial-view observers (upper arm, forearm).
+  std::vector<std::vector<Index>> observer_loops() const { return m_sleeve.observer_loops(); }
   /// The sleeve's open ends: {shoulder ring, wrist ring}.
   std::array<Index, 2> open_end_rings() const { return m_sleeve.open_end_rings(); }
 

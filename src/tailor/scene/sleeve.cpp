@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -70,6 +71,17 @@ Sleeve make_sleeve(const Arm& arm, const SleeveParams& params) {
       s.elbow_ring = r;
     }
   }
+
+  // Observers at the middle of the upper-arm and forearm parts of the sleeve.
+  const double elbow = arm.params().upper_arm_length;
+  const double end = params.start + params.length;
+  const double upper_mid = 0.5 * (params.start + std::min(elbow, end));
+  const double fore_mid = 0.5 * (std::max(elbow, params.start) + end);
+  const auto nearest_ring = [&](double x) {
+    const double r = std::round((x - params.start) / params.length * (rings - 1));
+    return static_cast<Index>(std::clamp(r, 0.0, static_cast<double>(rings - 1)));
+  };
+  s.observer_rings = {nearest_ring(upper_mid), nearest_ring(fore_mid)};
 
   // Two triangles per quad, diagonals alternating so the tube has no helical bias;
   // (ring r, j), (r, j+1), (r+1, j) is outward (see Arm).

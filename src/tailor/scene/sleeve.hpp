@@ -29,6 +29,9 @@ struct Sleeve {
   Positions rest;                       ///< rest (and initial) positions
   std::shared_ptr<TriangleMesh> mesh;   ///< fixed connectivity
   Index elbow_ring = 0;                 ///< ring nearest to the elbow in the rest pose
+  /// Rings nearest to the middle of the sleeve's upper-arm part and of its forearm part:
+  /// the section loops of the paper's two radial-view observers.
+  std::array<Index, 2> observer_rings{0, 0};
 
   Index num_rings() const { return params.rings; }
   Index num_segments() const { return params.segments; }
@@ -38,6 +41,10 @@ struct Sleeve {
   std::vector<std::vector<Index>> rings() const;
   /// The two open ends: {shoulder ring, wrist ring}.
   std::array<Index, 2> open_end_rings() const { return {0, params.rings - 1}; }
+  /// Vertex ids of the observer rings (section loops for radial-view culling).
+  std::vector<std::vector<Index>> observer_loops() const {
+    return {ring(observer_rings[0]), ring(observer_rings[1])};
+  }
   /// Vertices attached to the arm (the shoulder ring).
   std::vector<Index> pinned_vertices() const { return ring(0); }
   /// Per-face warp direction (along the arm) for the cloth model's anisotropic membrane.

@@ -9,6 +9,8 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numbers>
 
 #include "tailor/geometry/error.hpp"
@@ -313,28 +315,44 @@ ClothModel::ClothModel(const TriangleMesh& mesh, const Positions& rest,
     m.hinges.push_back(h);
   }
 
-  // Fixed sparsity: 3x3 blocks for every vertex pair sharing a face or a hinge.
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(static_cast<std::size_t>(9 * (9 * nf + 16 * static_cast<Index>(m.hinges.size()) + m.nv)));
-  const auto add = [&](Index I, Index J) {
-    for (int a = 0; a < 3; ++a) {
-      for (int b = 0; b < 3; ++b) triplets.emplace_back(3 * I + a, 3 * J + b, 1.0);
-    }
-  };
-  for (Index v = 0; v < m.nv; ++v) add(v, v);
+  // Fixed sparsity: 3x3 blocks for every vertex pair sharing a face or a hinge, built
+  // column by column from sorted neighbour lists (no triplets: memory linear and small).
+  std::vector<std::vector<Index>> neighbours(static_cast<std::size_t>(m.nv));
+  for (Index v = 0; v < m.nv; ++v) neighbours[static_cast<std::size_t>(v)].push_back(v);
   for (Index t = 0; t < nf; ++t) {
     for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) add(m.faces(t, i), m.faces(t, j));
+      for (int j = 0; j < 3; ++j) {
+        if (i != j) neighbours[static_cast<std::size_t>(m.faces(t, j))].push_back(m.faces(t, i));
+      }
     }
   }
   for (const Hinge& h : m.hinges) {
-    for (int i = 0; i < 4; ++i) {
-      for (int j = 0; j < 4; ++j) add(h.v[i], h.v[j]);
+    // Only the two opposite vertices are new neighbours; the rest share a face.
+    neighbours[static_cast<std::size_t>(h.v[2])].push_back(h.v[3]);
+    neighbours[static_cast<std::size_t>(h.v[3])].push_back(h.v[2]);
+  }
+  std::int64_t nnz = 0;
+  for (auto& list : neighbours) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    nnz += 9 * static_cast<std::int64_t>(list.size());
+  }
+  if (nnz > std::numeric_limits<int>::max()) throw InputError("cloth: mesh too large for the sparse system");
+  m.pattern.resize(3 * m.nv, 3 * m.nv);
+  m.pattern.resizeNonZeros(static_cast<Eigen::Index>(nnz));
+  int* outer = m.pattern.outerIndexPtr();
+  int* inner = m.pattern.innerIndexPtr();
+  int k = 0;
+  for (Index J = 0; J < m.nv; ++J) {
+    const auto& list = neighbours[static_cast<std::size_t>(J)];
+    for (int b = 0; b < 3; ++b) {
+      outer[3 * J + b] = k;
+      for (Index I : list) {
+        for (int a = 0; a < 3; ++a) inner[k++] = 3 * I + a;
+      }
     }
   }
-  m.pattern.resize(3 * m.nv, 3 * m.nv);
-  m.pattern.setFromTriplets(triplets.begin(), triplets.end());
-  m.pattern.makeCompressed();
+  outer[3 * m.nv] = k;
   std::fill(m.pattern.valuePtr(), m.pattern.valuePtr() + m.pattern.nonZeros(), 0.0);
   m.last_dv = Eigen::VectorXd::Zero(3 * m.nv);
 }

@@ -30,6 +30,7 @@ struct ClothMaterial {
 /// Energies of a state (J).
 struct ClothEnergy {
   double kinetic = 0, gravity = 0, membrane = 0, bending = 0;
+  /// Sum of all four.
   double total() const { return kinetic + gravity + membrane + bending; }
 };
 
@@ -75,11 +76,13 @@ class ClothModel {
   ClothModel(ClothModel&&) noexcept;
   ClothModel& operator=(ClothModel&&) noexcept;
 
+  /// The material the model was built with.
   const ClothMaterial& material() const;
   /// Lumped vertex masses (kg): a third of each incident face's rest area times density.
   const Eigen::VectorXd& masses() const;
   /// Vertices whose positions are prescribed (sorted, unique on return).
   void set_pinned(std::vector<Index> vertices);
+  /// The pinned vertices, sorted.
   const std::vector<Index>& pinned() const;
   /// Chooses the linear solver and, for CG, the relative residual to reach.
   void set_solver(ClothSolver solver, double cg_tolerance = 1e-6);

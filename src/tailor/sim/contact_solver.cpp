@@ -210,7 +210,10 @@ struct ContactSolver::Impl {
   // Cloth-arm broad phase (cloth trees refitted every pass, arm trees per resolve).
   Bvh cloth_vertex_bvh, cloth_edge_bvh, cloth_face_bvh;
   Bvh arm_vertex_bvh, arm_edge_bvh, arm_face_bvh;
+  // Proximity trees on end-of-step boxes (refitted, built once per topology).
+  Bvh cloth_point_bvh, cloth_near_face_bvh, arm_near_face_bvh;
   const TriangleMesh* arm_mesh = nullptr;
+  bool arm_mesh_changed = false;  // the arm trees were rebuilt in this resolve
   // Per-resolve state.
   const Positions* x0 = nullptr;
   const KinematicObstacle* arm = nullptr;
@@ -218,8 +221,11 @@ struct ContactSolver::Impl {
   std::unordered_map<Index, Vec3> arm_targets;
 
   Impl(const TriangleMesh& cloth_, const Positions& x_build, Eigen::VectorXd masses,
-       DetectionConfig detection, ContactParams params_)
-      : cloth(cloth_), detector(cloth_, x_build, detection), params(params_) {
+       DetectionConfig detection, ContactParams params_,
+       std::vector<std::vector<Index>> section_loops)
+      : cloth(cloth_),
+        detector(cloth_, x_build, detection, std::move(section_loops)),
+        params(params_) {
     if (masses.size() != cloth.num_vertices()) {
       throw InputError(fmt::format("contact solver: {} masses for {} cloth vertices",
                                    masses.size(), cloth.num_vertices()));
@@ -236,6 +242,8 @@ struct ContactSolver::Impl {
     cloth_vertex_bvh = Bvh(cloth_vertex_boxes(x_build, x_build));
     cloth_edge_bvh = Bvh(cloth_edge_boxes(x_build, x_build));
     cloth_face_bvh = Bvh(cloth_face_boxes(x_build, x_build, 0));
+    cloth_point_bvh = Bvh(cloth_vertex_boxes(x_build, x_build));
+    cloth_near_face_bvh = Bvh(cloth_face_boxes(x_build, x_build, 0));
   }
 
   // ---- boxes ---------------------------------------------------------------------------
@@ -277,12 +285,14 @@ struct ContactSolver::Impl {
     for (Index f = 0; f < m.num_faces(); ++f) {
       for (int k = 0; k < 3; ++k) fb[f].extend(vb[m.faces()(f, k)]);
     }
+    arm_mesh_changed = false;
     if (arm_mesh != &m || arm_vertex_bvh.num_primitives() != m.num_vertices() ||
         arm_face_bvh.num_primitives() != m.num_faces()) {
       arm_vertex_bvh = Bvh(vb);
       arm_edge_bvh = Bvh(eb);
       arm_face_bvh = Bvh(fb);
       arm_mesh = &m;
+      arm_mesh_changed = true;
     } else {
       arm_vertex_bvh.refit(vb);
       arm_edge_bvh.refit(eb);
@@ -508,10 +518,14 @@ struct ContactSolver::Impl {
     for (Index f = 0; f < m.num_faces(); ++f) {
       for (int k = 0; k < 3; ++k) arm_boxes[f].extend(point_box(row(arm->x1, m.faces()(f, k)), row(arm->x1, m.faces()(f, k)), h));
     }
-    const Bvh arm_end(arm_boxes);
-    std::vector<Aabb> vb(static_cast<std::size_t>(cloth.num_vertices()));
-    for (Index v = 0; v < cloth.num_vertices(); ++v) vb[v] = point_box(row(x1, v), row(x1, v));
-    const Bvh verts(vb);
+    if (arm_near_face_bvh.num_primitives() != m.num_faces() || arm_mesh_changed) {
+      arm_near_face_bvh = Bvh(arm_boxes);
+    } else {
+      arm_near_face_bvh.refit(arm_boxes);
+    }
+    const Bvh& arm_end = arm_near_face_bvh;
+    cloth_point_bvh.refit(cloth_vertex_boxes(x1, x1));
+    const Bvh& verts = cloth_point_bvh;
     std::vector<std::pair<Index, Index>> pairs;
     verts.for_each_overlapping_pair(arm_end, [&](Index v, Index f) {
       if (!pinned[v]) pairs.emplace_back(v, f);
@@ -565,7 +579,8 @@ struct ContactSolver::Impl {
   std::int64_t cloth_proximity(Positions& x1) {
     const double h = params.thickness;
     const std::vector<Aabb> face_boxes = cloth_face_boxes(x1, x1, 0.5 * h);
-    const Bvh faces(face_boxes);
+    cloth_near_face_bvh.refit(face_boxes);
+    const Bvh& faces = cloth_near_face_bvh;
     std::vector<Aabb> edge_boxes(static_cast<std::size_t>(cloth.num_edges()));
     for (Index e = 0; e < cloth.num_edges(); ++e) {
       for (int k = 0; k < 2; ++k) edge_boxes[e].extend(point_box(row(x1, cloth.edges()(e, k)), row(x1, cloth.edges()(e, k)), 0.5 * h));
@@ -923,8 +938,10 @@ struct ContactSolver::Impl {
 
 ContactSolver::ContactSolver(const TriangleMesh& cloth, const Positions& x_build,
                              Eigen::VectorXd masses, DetectionConfig detection,
-                             ContactParams params)
-    : m_impl(std::make_unique<Impl>(cloth, x_build, std::move(masses), detection, params)) {}
+                             ContactParams params,
+                             std::vector<std::vector<Index>> section_loops)
+    : m_impl(std::make_unique<Impl>(cloth, x_build, std::move(masses), detection, params,
+                                    std::move(section_loops))) {}
 ContactSolver::~ContactSolver() = default;
 ContactSolver::ContactSolver(ContactSolver&&) noexcept = default;
 ContactSolver& ContactSolver::operator=(ContactSolver&&) noexcept = default;

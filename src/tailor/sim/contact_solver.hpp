@@ -6,6 +6,7 @@
 /// and a moving kinematic obstacle (the arm).
 
 #include <memory>
+#include <vector>
 
 #include "tailor/detection/detection_config.hpp"
 #include "tailor/detection/detection_stats.hpp"
@@ -52,8 +53,11 @@ struct ContactStats {
 class ContactSolver {
  public:
   /// `masses` per cloth vertex (kg); a vertex with infinite mass (pinned) is never moved.
+  /// `section_loops`: rings of cloth vertices, one per radial-view observer (optional;
+  /// see SelfCollisionDetector).
   ContactSolver(const TriangleMesh& cloth, const Positions& x_build, Eigen::VectorXd masses,
-                DetectionConfig detection, ContactParams params);
+                DetectionConfig detection, ContactParams params,
+                std::vector<std::vector<Index>> section_loops = {});
   ~ContactSolver();
   ContactSolver(ContactSolver&&) noexcept;
   ContactSolver& operator=(ContactSolver&&) noexcept;

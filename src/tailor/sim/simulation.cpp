@@ -100,7 +100,8 @@ struct Simulation::Impl {
     if (options.contact) {
       Eigen::VectorXd masses = cloth.masses();
       for (Index p : pinned) masses[p] = std::numeric_limits<double>::infinity();
-      contact = std::make_unique<ContactSolver>(*sleeve.mesh, x, masses, options.detection, config.contact);
+      contact = std::make_unique<ContactSolver>(*sleeve.mesh, x, masses, options.detection, config.contact,
+                                                scene.observer_loops());
     }
   }
 

@@ -45,6 +45,7 @@ struct StepRecord {
   double response_ms = 0;      ///< contact response inside the contact solver
   double check_ms = 0;         ///< static intersection check
   double step_ms = 0;          ///< the whole substep
+  /// All intersections the static check found.
   std::int64_t intersections() const { return self_intersections + obstacle_intersections; }
 };
 
@@ -53,18 +54,19 @@ void to_json(nlohmann::json& json, const StepRecord& record);
 
 /// Sums and extremes over the substeps run so far.
 struct SimulationTotals {
-  int frames = 0;
-  std::int64_t steps = 0;
-  std::int64_t self_collisions = 0;
-  std::int64_t obstacle_collisions = 0;
+  int frames = 0;                        ///< frames completed
+  std::int64_t steps = 0;                ///< substeps completed
+  std::int64_t self_collisions = 0;      ///< cloth-cloth collisions the contact solver found
+  std::int64_t obstacle_collisions = 0;  ///< cloth-arm collisions the contact solver found
   std::int64_t intersections = 0;  ///< found by the static check (must be 0)
-  std::int64_t checked_steps = 0;
-  std::int64_t impulses = 0;
-  std::int64_t impact_zones = 0;
-  std::int64_t last_resorts = 0;
-  std::int64_t failed_solves = 0;
+  std::int64_t checked_steps = 0;  ///< substeps the static check ran after
+  std::int64_t impulses = 0;       ///< CCD impulses applied
+  std::int64_t impact_zones = 0;   ///< rigid impact zones formed
+  std::int64_t last_resorts = 0;   ///< substeps the contact solver had to revert
+  std::int64_t failed_solves = 0;  ///< implicit solves that failed (velocities kept)
   std::int64_t max_ctps = 0, max_vf = 0, max_ee = 0;  ///< per step, sent to detection/CCD
   DetectionStats detection;  ///< summed over steps
+  /// Summed times (ms) of the parts of a substep (see StepRecord).
   double forces_solve_ms = 0, detection_ms = 0, response_ms = 0, check_ms = 0, step_ms = 0;
   double wall_seconds = 0;   ///< wall time spent in step_frame()
 };
