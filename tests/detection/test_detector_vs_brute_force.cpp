@@ -96,7 +96,7 @@ TEST_P(DetectorVsBruteForce, EveryStageCombinationEqualsBruteForce) {
 INSTANTIATE_TEST_SUITE_P(Seeds, DetectorVsBruteForce, ::testing::Values(1u, 2u, 3u));
 
 TEST(DetectorVsBruteForce, LargerMeshesWithPresets) {
-  const int resolution = sanitized() ? 12 : 70;  // ~10K triangles on the grids
+  const int resolution = sanitized() ? 12 : 50;  // ~5K triangles on the grids
   for (const auto& step : testing::make_random_steps(7, resolution)) {
     const TriangleMesh mesh(static_cast<Index>(step.mesh.vertices.rows()), step.mesh.faces);
     const CollisionSet truth = brute_force_self_collisions(mesh, step.mesh.vertices, step.x1);
