@@ -158,8 +158,9 @@ void run_hanging_sheet(ClothSolver solver, int substeps, int frames, bool weft_d
     const double l0 = (s.rest.row(edges(e, 0)) - s.rest.row(edges(e, 1))).norm();
     EXPECT_LT(l, 1.05 * l0) << "edge " << e;
   }
-  // Still swinging but damped: well below the energy the fall released (~0.09 J).
-  EXPECT_LT(model.energy(x, v, g).kinetic, 0.01);
+  // Still swinging but damped: below the energy the fall released (~0.09 J), well below
+  // after three seconds.
+  EXPECT_LT(model.energy(x, v, g).kinetic, frames >= 90 ? 0.01 : 0.05);
 }
 
 TEST(ClothModel, HangingSheetDirectSolver) { run_hanging_sheet(ClothSolver::direct, 5, sanitized() ? 30 : 90); }

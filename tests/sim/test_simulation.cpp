@@ -210,7 +210,7 @@ TEST(SimulateCommand, RejectsBadInputWithExitCode2) {
 TEST(SimulateCommand, CtrlCStopsAfterTheFrameWithAValidSummary) {
   const fs::path out = fs::temp_directory_path() / "tailor_test_simulate_sigint";
   fs::remove_all(out);
-  const int status = run_cli({"simulate", "--frames", "100000", "--rings", "6", "--segments", "10",
+  const int status = run_cli({"simulate", "--frames", "100000", "--rings", "13", "--segments", "20",
                               "--out", out.string(), "--threads", "1"},
                              sanitized() ? 4.0 : 1.5);
   EXPECT_EQ(status, 130);

@@ -30,7 +30,9 @@ class Gesture {
   /// Keyframes must have increasing times; throws InputError otherwise or if empty.
   Gesture(std::string name, std::vector<Keyframe> keyframes);
 
+  /// The gesture's name.
   const std::string& name() const { return m_name; }
+  /// Keyframes in time order.
   const std::vector<Keyframe>& keyframes() const { return m_keyframes; }
   /// Time of the last keyframe (s); the pose is held after it.
   double duration() const { return m_keyframes.back().time; }

@@ -69,9 +69,13 @@ class Scene {
   /// Builds everything; throws InputError on inconsistent settings.
   explicit Scene(const SceneConfig& config);
 
+  /// The settings it was built from.
   const SceneConfig& config() const { return m_config; }
+  /// The skinned arm.
   const Arm& arm() const { return m_arm; }
+  /// The gesture the arm plays.
   const Gesture& gesture() const { return m_gesture; }
+  /// The sleeve (rest shape, connectivity, rings).
   const Sleeve& sleeve() const { return m_sleeve; }
 
   /// Section loops: vertex ids of each sleeve ring, shoulder end first.

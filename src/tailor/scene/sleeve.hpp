@@ -33,7 +33,9 @@ struct Sleeve {
   /// the section loops of the paper's two radial-view observers.
   std::array<Index, 2> observer_rings{0, 0};
 
+  /// Rings along the arm.
   Index num_rings() const { return params.rings; }
+  /// Vertices per ring.
   Index num_segments() const { return params.segments; }
   /// Vertex ids of ring `r`, in order around the arm.
   std::vector<Index> ring(Index r) const;

@@ -124,15 +124,16 @@ struct Simulation::Impl {
 
     // Cloth on the arm: contact springs in the solve, friction, then a safety projection.
     const double margin = kArmMarginFactor * config.contact.thickness;
+    const double arm_friction = options.arm_friction >= 0 ? options.arm_friction : config.contact.friction;
     const std::vector<ContactPlane> planes =
         arm_contact_planes(arm, skeleton, skeleton1, x, cloth.masses(), h, margin, 0.5 * margin,
                            kArmContactStiffness, fixed, released);
     Positions x1, v1;
     record.cloth = cloth.step(x, v, targets, config.gravity, h, x1, v1, planes);
     record.arm_contacts = finish_arm_contacts(planes, arm, skeleton, skeleton1, x, x1, cloth.masses(),
-                                              h, config.contact.friction, released);
+                                              h, arm_friction, released);
     const ArmCollisionStats arm_stats = project_out_of_arm(
-        arm, skeleton, skeleton1, x, x1, margin, config.contact.friction, fixed, &projected_ids);
+        arm, skeleton, skeleton1, x, x1, margin, arm_friction, fixed, &projected_ids);
     for (Index i : projected_ids) released[static_cast<std::size_t>(i)] = 0;
     record.arm_projected = arm_stats.projected;
     record.forces_solve_ms = ms_since(step_start);
