@@ -3,6 +3,7 @@
 /// Helpers shared by the ccd tests: query scaling, file lists, and an independent exact
 /// static contact test (orientation predicates in rationals) used as a one-sided oracle.
 
+#include "support/sanitized.hpp"
 #include <gmpxx.h>
 
 #include <algorithm>
@@ -29,10 +30,7 @@ inline std::vector<std::string> reference_query_files() {
   return files;
 }
 
-inline bool sanitized() {
-  const char* s = std::getenv("TAILOR_SANITIZED");
-  return s != nullptr && std::string(s) == "1";
-}
+using tailor::testing::sanitized;
 
 inline Vec3 scaled(const Vec3& x, int e) {
   return {std::ldexp(x[0], e), std::ldexp(x[1], e), std::ldexp(x[2], e)};

@@ -1,5 +1,6 @@
 // Every combination of culling stages reports exactly the brute-force collisions.
 
+#include "support/sanitized.hpp"
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -13,7 +14,7 @@
 namespace tailor {
 namespace {
 
-bool sanitized() { return std::getenv("TAILOR_SANITIZED") != nullptr; }
+using tailor::testing::sanitized;
 
 // All sound combinations of the switchable stages (the contour test is never off here:
 // without it the cone theorem does not hold).

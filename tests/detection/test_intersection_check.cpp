@@ -1,6 +1,7 @@
 /// @file
 /// The static intersection checker: hand-made meshes, BVH-accelerated vs brute force, CLI.
 
+#include "support/sanitized.hpp"
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,10 +18,7 @@
 namespace tailor {
 namespace {
 
-bool sanitized() {
-  const char* v = std::getenv("TAILOR_SANITIZED");
-  return v != nullptr && std::string(v) == "1";
-}
+using tailor::testing::sanitized;
 
 /// An n×n-vertex grid in the plane z = 0 over [0, 1]², two triangles per cell.
 struct Grid {

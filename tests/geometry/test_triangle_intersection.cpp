@@ -1,6 +1,7 @@
 /// @file
 /// Exact static triangle-triangle intersection and the orientation predicates under it.
 
+#include "support/sanitized.hpp"
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,10 +14,7 @@
 namespace tailor {
 namespace {
 
-bool sanitized() {
-  const char* v = std::getenv("TAILOR_SANITIZED");
-  return v != nullptr && std::string(v) == "1";
-}
+using tailor::testing::sanitized;
 
 Triangle tri(Vec3 a, Vec3 b, Vec3 c) { return {a, b, c}; }
 

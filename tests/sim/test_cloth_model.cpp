@@ -1,6 +1,7 @@
 /// @file
 /// Cloth model: derivatives against finite differences, a hanging cloth, stability.
 
+#include "support/sanitized.hpp"
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,10 +14,7 @@
 namespace tailor {
 namespace {
 
-bool sanitized() {
-  const char* s = std::getenv("TAILOR_SANITIZED");
-  return s != nullptr && std::string(s) == "1";
-}
+using tailor::testing::sanitized;
 
 /// A square sheet of n × n vertices, side `size` metres, in the x-z plane at y = 0.
 struct Sheet {

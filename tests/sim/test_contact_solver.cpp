@@ -2,6 +2,7 @@
 /// The contact solver: after resolve() nothing collides over the substep (checked with the
 /// brute-force CCD oracle and the exact static intersection test), pinned vertices stay.
 
+#include "support/sanitized.hpp"
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,10 +22,7 @@
 namespace tailor {
 namespace {
 
-bool sanitized() {
-  const char* v = std::getenv("TAILOR_SANITIZED");
-  return v != nullptr && std::string(v) == "1";
-}
+using tailor::testing::sanitized;
 
 /// A grid of nx × ny vertices; `place(i, j)` gives each vertex's position.
 template <class Place>

@@ -2,6 +2,7 @@
 /// The arm-sleeve simulation: short runs of every gesture at low resolution, and the
 /// `tailor simulate` command's files (including Ctrl-C).
 
+#include "support/sanitized.hpp"
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <spawn.h>
@@ -27,10 +28,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool sanitized() {
-  const char* s = std::getenv("TAILOR_SANITIZED");
-  return s != nullptr && std::string(s) == "1";
-}
+using tailor::testing::sanitized;
 
 /// A small, fast version of the default scene: the gesture played faster.
 SceneConfig small_scene(const std::string& gesture) {
