@@ -23,10 +23,9 @@ struct QuerySet {
 };
 
 const std::string kData = TAILOR_DATA_DIR;
-const char* kErleben[] = {"cube-cliff-edges", "cube-internal-edges", "sliding-spike",
-                          "sliding-wedge",    "spike-crack",         "spike-hole",
-                          "spike-wedge",      "spikes",              "wedge-crack",
-                          "wedges"};
+const char* kErleben[] = {
+    "cube-cliff-edges", "cube-internal-edges", "sliding-spike", "sliding-wedge", "spike-crack",
+    "spike-hole",       "spike-wedge",         "spikes",        "wedge-crack",   "wedges"};
 
 void append(QuerySet& s, const std::string& path, const std::string& truth_json = "") {
   CcdQueryFile f = read_ccd_queries(path);
@@ -77,8 +76,12 @@ const QuerySet& unit_tests() {
   return s;
 }
 
-const QuerySet& set(int i) { return i == 0 ? funnel() : (i == 1 ? erleben() : unit_tests()); }
-const char* set_name(int i) { return i == 0 ? "funnel" : (i == 1 ? "erleben" : "unit-tests"); }
+const QuerySet& set(int i) {
+  return i == 0 ? funnel() : (i == 1 ? erleben() : unit_tests());
+}
+const char* set_name(int i) {
+  return i == 0 ? "funnel" : (i == 1 ? "erleben" : "unit-tests");
+}
 
 template <class Q, class Fn>
 void run_exact(benchmark::State& state, const std::vector<Q>& qs, Fn&& fn) {
@@ -157,13 +160,15 @@ void run_naive(benchmark::State& state, const std::vector<Q>& qs, const std::vec
 void BM_NaiveVertexFace(benchmark::State& state) {
   const QuerySet& s = set(static_cast<int>(state.range(0)));
   state.SetLabel(set_name(static_cast<int>(state.range(0))));
-  run_naive(state, s.vf, s.vf_truth, [](const VertexFaceQuery& q) { return bench::naive_vertex_face(q); });
+  run_naive(state, s.vf, s.vf_truth,
+            [](const VertexFaceQuery& q) { return bench::naive_vertex_face(q); });
 }
 
 void BM_NaiveEdgeEdge(benchmark::State& state) {
   const QuerySet& s = set(static_cast<int>(state.range(0)));
   state.SetLabel(set_name(static_cast<int>(state.range(0))));
-  run_naive(state, s.ee, s.ee_truth, [](const EdgeEdgeQuery& q) { return bench::naive_edge_edge(q); });
+  run_naive(state, s.ee, s.ee_truth,
+            [](const EdgeEdgeQuery& q) { return bench::naive_edge_edge(q); });
 }
 
 // Argument: 0 = cloth-funnel, 1 = erleben scenes, 2 = unit-tests.

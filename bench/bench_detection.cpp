@@ -27,8 +27,8 @@ const Scene& scene(int cells, double t) {
   Scene& s = it->second;
   if (inserted) {
     s.grid = make_grid(cells, cells, 1.0, 1.0);
-    s.mesh = std::make_unique<TriangleMesh>(static_cast<Index>(s.grid.vertices.rows()),
-                                            s.grid.faces);
+    s.mesh =
+        std::make_unique<TriangleMesh>(static_cast<Index>(s.grid.vertices.rows()), s.grid.faces);
     s.x0 = crumpling_cloth(s.grid.vertices, t);
     s.x1 = crumpling_cloth(s.grid.vertices, t + 0.01);
   }

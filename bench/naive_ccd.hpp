@@ -13,7 +13,9 @@
 
 namespace tailor::bench {
 
-inline Vec3 lerp(const Vec3& a, const Vec3& b, double t) { return a + t * (b - a); }
+inline Vec3 lerp(const Vec3& a, const Vec3& b, double t) {
+  return a + t * (b - a);
+}
 
 /// Roots in [0, 1] of c0 + c1 t + c2 t^2 + c3 t^3 (double, best effort).
 inline std::vector<double> naive_cubic_roots(double c0, double c1, double c2, double c3) {
@@ -74,7 +76,9 @@ void cubic_coefficients(F&& f, double c[4]) {
   c[3] = (-9 * f0 + 27 * f1 - 27 * f2 + 9 * f3) / 2;
 }
 
-inline double det3(const Vec3& u, const Vec3& v, const Vec3& w) { return u.dot(v.cross(w)); }
+inline double det3(const Vec3& u, const Vec3& v, const Vec3& w) {
+  return u.dot(v.cross(w));
+}
 
 inline bool naive_vertex_face(const VertexFaceQuery& q) {
   auto f = [&](double t) {

@@ -25,7 +25,9 @@ struct BenchArgs {
   int repetitions = 3;
 };
 
-bool on_terminal() { return isatty(fileno(stderr)) != 0; }
+bool on_terminal() {
+  return isatty(fileno(stderr)) != 0;
+}
 
 int run_paper(const BenchArgs& args) {
   SceneConfig scene = args.scene_path.empty() ? SceneConfig{} : load_scene_config(args.scene_path);
@@ -38,8 +40,8 @@ int run_paper(const BenchArgs& args) {
         if (terminal && frame == frames) fmt::print(stderr, "\n");
       });
   bench.write(args.out);
-  fmt::print("## Fig. 1: candidate triangle pairs (elbow gesture, {} frames)\n\n{}\n",
-             scene.frames, bench.fig1_markdown());
+  fmt::print("## Fig. 1: candidate triangle pairs (elbow gesture, {} frames)\n\n{}\n", scene.frames,
+             bench.fig1_markdown());
   fmt::print("## Table 1: pairs reaching the exact CCD per step, and frame rate\n\n{}\n",
              bench.table1_markdown());
   if (!bench.same_collisions) {
@@ -72,42 +74,44 @@ int run_scale(const BenchArgs& args) {
     std::filesystem::rename(csv.string() + ".tmp", csv);
   }
   scale_plot(rows).write(std::filesystem::path(args.out) / "scale.svg");
-  fmt::print("| scene | threads | triangles | floor ms | refit | traversal | low level | "
-             "exact CCD | total ms | CTPs | VF | EE | collisions | peak MiB |\n"
-             "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  fmt::print(
+      "| scene | threads | triangles | floor ms | refit | traversal | low level | "
+      "exact CCD | total ms | CTPs | VF | EE | collisions | peak MiB |\n"
+      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const ScaleRow& r : rows) {
-    fmt::print("| {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {} | {} | "
-               "{} | {} | {:.0f} |\n",
-               r.scene, r.threads, r.triangles, r.floor_ms, r.refit_ms, r.traversal_ms,
-               r.low_level_ms, r.ccd_ms, r.total_ms, r.ctps, r.vf, r.ee, r.collisions,
-               r.peak_mib);
+    fmt::print(
+        "| {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {} | {} | "
+        "{} | {} | {:.0f} |\n",
+        r.scene, r.threads, r.triangles, r.floor_ms, r.refit_ms, r.traversal_ms, r.low_level_ms,
+        r.ccd_ms, r.total_ms, r.ctps, r.vf, r.ee, r.collisions, r.peak_mib);
   }
   fmt::print("written to {}/\n", args.out);
   return kSuccess;
 }
 
-const CommandRegistration registration{"bench", [](CLI::App& app) {
-  auto args = std::make_shared<BenchArgs>();
-  CLI::App* bench = app.add_subcommand("bench", "Reproduce the paper's experiment and scaling");
-  bench->require_subcommand(1);
-  CLI::App* paper = bench->add_subcommand(
-      "paper", "Fig. 1 and Table 1 on the sleeve with the elbow gesture (one run per method)");
-  paper->add_option("--out", args->out, "Output folder")->capture_default_str();
-  paper->add_option("--scene", args->scene_path, "Scene file (default: built-in sleeve)")
-      ->check(CLI::ExistingFile);
-  paper->add_option("--frames", args->frames, "Frames per run (default: the scene's)")
-      ->check(CLI::PositiveNumber);
-  CLI::App* scale = bench->add_subcommand(
-      "scale", "Per-stage cost from 1K to 1M triangles, 1 and 2 threads, with the refit floor");
-  scale->add_option("--out", args->out, "Output folder")->capture_default_str();
-  scale->add_option("--max-triangles", args->max_triangles, "Largest mesh")
-      ->check(CLI::Range(1000, 50'000'000))
-      ->capture_default_str();
-  scale->add_option("--repetitions", args->repetitions, "Timed steps per configuration")
-      ->check(CLI::Range(1, 100))
-      ->capture_default_str();
-  return [args, paper] { return paper->parsed() ? run_paper(*args) : run_scale(*args); };
-}};
+const CommandRegistration registration{
+    "bench", [](CLI::App& app) {
+      auto args = std::make_shared<BenchArgs>();
+      CLI::App* bench = app.add_subcommand("bench", "Reproduce the paper's experiment and scaling");
+      bench->require_subcommand(1);
+      CLI::App* paper = bench->add_subcommand(
+          "paper", "Fig. 1 and Table 1 on the sleeve with the elbow gesture (one run per method)");
+      paper->add_option("--out", args->out, "Output folder")->capture_default_str();
+      paper->add_option("--scene", args->scene_path, "Scene file (default: built-in sleeve)")
+          ->check(CLI::ExistingFile);
+      paper->add_option("--frames", args->frames, "Frames per run (default: the scene's)")
+          ->check(CLI::PositiveNumber);
+      CLI::App* scale = bench->add_subcommand(
+          "scale", "Per-stage cost from 1K to 1M triangles, 1 and 2 threads, with the refit floor");
+      scale->add_option("--out", args->out, "Output folder")->capture_default_str();
+      scale->add_option("--max-triangles", args->max_triangles, "Largest mesh")
+          ->check(CLI::Range(1000, 50'000'000))
+          ->capture_default_str();
+      scale->add_option("--repetitions", args->repetitions, "Timed steps per configuration")
+          ->check(CLI::Range(1, 100))
+          ->capture_default_str();
+      return [args, paper] { return paper->parsed() ? run_paper(*args) : run_scale(*args); };
+    }};
 
 }  // namespace
 }  // namespace tailor::cli

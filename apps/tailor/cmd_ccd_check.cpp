@@ -33,9 +33,10 @@ struct Tally {
   }
   std::string describe() const {
     const double ns = queries ? seconds * 1e9 / static_cast<double>(queries) : 0.0;
-    return fmt::format("queries={} colliding={} fn={} fp={} ns/query={:.0f} filter={} double={} "
-                       "exact={}",
-                       queries, colliding, fn, fp, ns, by_path[0], by_path[1], by_path[2]);
+    return fmt::format(
+        "queries={} colliding={} fn={} fp={} ns/query={:.0f} filter={} double={} "
+        "exact={}",
+        queries, colliding, fn, fp, ns, by_path[0], by_path[1], by_path[2]);
   }
 };
 
@@ -74,9 +75,10 @@ int run_ccd_check(const std::vector<std::string>& files, const std::vector<std::
     without_truth += loaded.back().truth.empty();
   }
   if (truths.size() != without_truth) {
-    throw InputError(fmt::format("{} file(s) have no truth column but {} --truth file(s) given; "
-                                 "give one --truth per such file, in the same order",
-                                 without_truth, truths.size()));
+    throw InputError(
+        fmt::format("{} file(s) have no truth column but {} --truth file(s) given; "
+                    "give one --truth per such file, in the same order",
+                    without_truth, truths.size()));
   }
   Tally total;
   std::size_t next_truth = 0;
@@ -107,9 +109,10 @@ const CommandRegistration registration{
           "Run the exact CCD on reference query files and compare with their ground truth");
       auto files = std::make_shared<std::vector<std::string>>();
       auto truths = std::make_shared<std::vector<std::string>>();
-      command->add_option("files", *files,
-                          "Query CSV files (type from a vertex-face/edge-edge folder or a "
-                          "name ending in vf/ee)")
+      command
+          ->add_option("files", *files,
+                       "Query CSV files (type from a vertex-face/edge-edge folder or a "
+                       "name ending in vf/ee)")
           ->required()
           ->check(CLI::ExistingFile);
       command

@@ -38,8 +38,7 @@ int run_check_intersections(const std::string& mesh_file, const std::string& obs
   fmt::print("undecided adjacent pairs:   {}\n", report.undecided_adjacent_pairs);
   for (const auto& [f, g] : report.self_pairs) fmt::print("  faces {} {}\n", f, g);
   if (obstacle) {
-    fmt::print("obstacle:                   {} ({} faces)\n", obstacle_file,
-               obstacle->num_faces());
+    fmt::print("obstacle:                   {} ({} faces)\n", obstacle_file, obstacle->num_faces());
     fmt::print("obstacle candidate pairs:   {}\n", report.obstacle_candidate_pairs);
     fmt::print("obstacle intersections:     {}\n", report.obstacle_intersections);
     for (const auto& [f, g] : report.obstacle_pairs) {

@@ -48,13 +48,15 @@ std::vector<std::vector<Index>> read_section_loops(const std::string& path) {
 }
 
 void print_stats(const DetectionStats& s) {
-  fmt::print("high level : {} node pairs visited, {} nodes culled by cones "
-             "({} contour tests, {} failed), {} CTPs\n",
-             s.node_pairs_visited, s.nodes_culled_by_cones, s.contour_tests,
-             s.contour_tests_failed, s.candidate_triangle_pairs);
-  fmt::print("radial view: {} clusters certified; triangles facing {} / away {} / "
-             "undetermined {}\n",
-             s.clusters_certified, s.radial_positive, s.radial_negative, s.radial_undetermined);
+  fmt::print(
+      "high level : {} node pairs visited, {} nodes culled by cones "
+      "({} contour tests, {} failed), {} CTPs\n",
+      s.node_pairs_visited, s.nodes_culled_by_cones, s.contour_tests, s.contour_tests_failed,
+      s.candidate_triangle_pairs);
+  fmt::print(
+      "radial view: {} clusters certified; triangles facing {} / away {} / "
+      "undetermined {}\n",
+      s.clusters_certified, s.radial_positive, s.radial_negative, s.radial_undetermined);
   fmt::print("isolated   : {} VF, {} EE pairs\n", s.isolated_vf_pairs, s.isolated_ee_pairs);
   fmt::print("low level  :        {:>10} {:>10}\n", "VF", "EE");
   fmt::print("  generated         {:>10} {:>10}\n", s.vf_generated, s.ee_generated);
@@ -63,20 +65,21 @@ void print_stats(const DetectionStats& s) {
   fmt::print("  exact CCD         {:>10} {:>10}  ({} decided by the exact path)\n", s.vf_tested,
              s.ee_tested, s.ccd_exact_fallbacks);
   fmt::print("  colliding         {:>10} {:>10}\n", s.vf_colliding, s.ee_colliding);
-  fmt::print("time (ms)  : refit {:.3f}, traversal {:.3f}, pair generation {:.3f}, "
-             "exact CCD {:.3f}, total {:.3f}\n",
-             s.refit_ms, s.traversal_ms, s.pair_generation_ms, s.ccd_ms, s.total_ms);
+  fmt::print(
+      "time (ms)  : refit {:.3f}, traversal {:.3f}, pair generation {:.3f}, "
+      "exact CCD {:.3f}, total {:.3f}\n",
+      s.refit_ms, s.traversal_ms, s.pair_generation_ms, s.ccd_ms, s.total_ms);
 }
 
 int run_detect(const DetectArgs& args) {
   const MeshData t0 = read_mesh(args.mesh_t0);
   const MeshData t1 = read_mesh(args.mesh_t1);
   if (t0.vertices.rows() != t1.vertices.rows() || t0.faces != t1.faces) {
-    throw InputError(fmt::format("{} and {} do not have the same topology ({} vs {} vertices, "
-                                 "{} vs {} faces{})",
-                                 args.mesh_t0, args.mesh_t1, t0.vertices.rows(),
-                                 t1.vertices.rows(), t0.faces.rows(), t1.faces.rows(),
-                                 t0.faces.rows() == t1.faces.rows() ? ", different faces" : ""));
+    throw InputError(fmt::format(
+        "{} and {} do not have the same topology ({} vs {} vertices, "
+        "{} vs {} faces{})",
+        args.mesh_t0, args.mesh_t1, t0.vertices.rows(), t1.vertices.rows(), t0.faces.rows(),
+        t1.faces.rows(), t0.faces.rows() == t1.faces.rows() ? ", different faces" : ""));
   }
   const TriangleMesh mesh(static_cast<Index>(t0.vertices.rows()), t0.faces);
   fmt::print("mesh       : {} vertices, {} faces, {} edges\n", mesh.num_vertices(),
@@ -109,21 +112,26 @@ int run_detect(const DetectArgs& args) {
   return kSuccess;
 }
 
-const CommandRegistration registration{"detect", [](CLI::App& app) {
-  auto args = std::make_shared<DetectArgs>();
-  CLI::App* command = app.add_subcommand("detect", "Self-collisions of one step between two frames");
-  command->add_option("MESH_T0", args->mesh_t0, "Mesh at the start of the step (OBJ or PLY)")
-      ->required()->check(CLI::ExistingFile);
-  command->add_option("MESH_T1", args->mesh_t1, "Mesh at the end of the step (same topology)")
-      ->required()->check(CLI::ExistingFile);
-  command->add_flag("--brute-force", args->brute_force, "Test every feature pair (the oracle)");
-  command->add_option("--json", args->json_path, "Write collisions and statistics as JSON");
-  command->add_option("--observers", args->observers_path,
-                      "Radial-view section loops: JSON {\"loops\": [[vertex ids], ...]}")
-      ->check(CLI::ExistingFile);
-  args->detection.add_to(*command);
-  return [args] { return run_detect(*args); };
-}};
+const CommandRegistration registration{
+    "detect", [](CLI::App& app) {
+      auto args = std::make_shared<DetectArgs>();
+      CLI::App* command =
+          app.add_subcommand("detect", "Self-collisions of one step between two frames");
+      command->add_option("MESH_T0", args->mesh_t0, "Mesh at the start of the step (OBJ or PLY)")
+          ->required()
+          ->check(CLI::ExistingFile);
+      command->add_option("MESH_T1", args->mesh_t1, "Mesh at the end of the step (same topology)")
+          ->required()
+          ->check(CLI::ExistingFile);
+      command->add_flag("--brute-force", args->brute_force, "Test every feature pair (the oracle)");
+      command->add_option("--json", args->json_path, "Write collisions and statistics as JSON");
+      command
+          ->add_option("--observers", args->observers_path,
+                       "Radial-view section loops: JSON {\"loops\": [[vertex ids], ...]}")
+          ->check(CLI::ExistingFile);
+      args->detection.add_to(*command);
+      return [args] { return run_detect(*args); };
+    }};
 
 }  // namespace
 }  // namespace tailor::cli

@@ -50,28 +50,36 @@ void print_progress(int frame, int frames, double fps, std::int64_t collisions) 
   const int filled = frames > 0 ? width * frame / frames : width;
   fmt::print(stderr, "\r[{}{}] frame {}/{}  {:.1f} fps  self-collisions {}   ",
              std::string(static_cast<std::size_t>(filled), '#'),
-             std::string(static_cast<std::size_t>(width - filled), '.'), frame, frames, fps, collisions);
+             std::string(static_cast<std::size_t>(width - filled), '.'), frame, frames, fps,
+             collisions);
   std::fflush(stderr);
 }
 
 void print_table(const nlohmann::json& s) {
-  const auto row = [](const char* name, const std::string& value) { fmt::print("  {:<30} {}\n", name, value); };
+  const auto row = [](const char* name, const std::string& value) {
+    fmt::print("  {:<30} {}\n", name, value);
+  };
   const auto mean_max = [&](const nlohmann::json& j) {
-    return fmt::format("{:.1f} mean, {} max", j["mean"].get<double>(), j["max"].get<std::int64_t>());
+    return fmt::format("{:.1f} mean, {} max", j["mean"].get<double>(),
+                       j["max"].get<std::int64_t>());
   };
   const auto& ms = s["ms_per_step"];
   fmt::print("\nsimulation summary\n");
-  row("frames", fmt::format("{}{}", s["frames"].get<int>(), s["interrupted"].get<bool>() ? " (interrupted)" : ""));
+  row("frames", fmt::format("{}{}", s["frames"].get<int>(),
+                            s["interrupted"].get<bool>() ? " (interrupted)" : ""));
   row("steps", std::to_string(s["steps"].get<std::int64_t>()));
-  row("cloth vertices / faces", fmt::format("{} / {}", s["cloth"]["vertices"].get<int>(), s["cloth"]["faces"].get<int>()));
+  row("cloth vertices / faces",
+      fmt::format("{} / {}", s["cloth"]["vertices"].get<int>(), s["cloth"]["faces"].get<int>()));
   row("candidate triangle pairs", mean_max(s["candidate_triangle_pairs"]));
   row("VF pairs tested", mean_max(s["vf_tested"]));
   row("EE pairs tested", mean_max(s["ee_tested"]));
   row("self-collisions (total)", std::to_string(s["self_collisions"].get<std::int64_t>()));
   row("arm collisions (total)", std::to_string(s["obstacle_collisions"].get<std::int64_t>()));
-  row("impulses / impact zones", fmt::format("{} / {}", s["impulses"].get<std::int64_t>(), s["impact_zones"].get<std::int64_t>()));
-  row("intersections (static check)", fmt::format("{} in {} checked steps", s["intersections"].get<std::int64_t>(),
-                                                 s["checked_steps"].get<std::int64_t>()));
+  row("impulses / impact zones", fmt::format("{} / {}", s["impulses"].get<std::int64_t>(),
+                                             s["impact_zones"].get<std::int64_t>()));
+  row("intersections (static check)",
+      fmt::format("{} in {} checked steps", s["intersections"].get<std::int64_t>(),
+                  s["checked_steps"].get<std::int64_t>()));
   row("forces+solve ms/step", fmt::format("{:.3f}", ms["forces_solve"].get<double>()));
   row("detection ms/step", fmt::format("{:.3f}", ms["detection"].get<double>()));
   row("response ms/step", fmt::format("{:.3f}", ms["response"].get<double>()));
@@ -100,7 +108,8 @@ int run_simulate(const SimulateOptions& o) {
 
   std::optional<tbb::global_control> parallelism;
   if (o.threads > 0) {
-    parallelism.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(o.threads));
+    parallelism.emplace(tbb::global_control::max_allowed_parallelism,
+                        static_cast<std::size_t>(o.threads));
   }
 
   Simulation sim(config, options);
@@ -108,20 +117,22 @@ int run_simulate(const SimulateOptions& o) {
   const auto& cloth_faces = sim.cloth_mesh().faces();
   const auto& arm_faces = sim.arm_mesh().faces();
   writer.write_frame(0, sim.cloth_positions(), cloth_faces, sim.arm_positions(), arm_faces);
-  spdlog::info("simulating '{}' ({} frames, {} substeps, sleeve {}×{} = {} vertices, method {}) into {}",
-               config.gesture.name, config.frames, config.substeps, config.sleeve.rings,
-               config.sleeve.segments, sim.cloth_mesh().num_vertices(), o.method, o.out);
+  spdlog::info(
+      "simulating '{}' ({} frames, {} substeps, sleeve {}×{} = {} vertices, method {}) into {}",
+      config.gesture.name, config.frames, config.substeps, config.sleeve.rings,
+      config.sleeve.segments, sim.cloth_mesh().num_vertices(), o.method, o.out);
 
   const bool tty = isatty(fileno(stderr)) != 0;
   bool interrupted = false;
   for (int f = 0; f < config.frames; ++f) {
     const auto& records = sim.step_frame();
-    writer.write_frame(sim.frame(), sim.cloth_positions(), cloth_faces, sim.arm_positions(), arm_faces);
+    writer.write_frame(sim.frame(), sim.cloth_positions(), cloth_faces, sim.arm_positions(),
+                       arm_faces);
     writer.append_steps(records);
     if (tty) {
       const auto& t = sim.totals();
-      print_progress(sim.frame(), config.frames, t.wall_seconds > 0 ? t.frames / t.wall_seconds : 0.0,
-                     t.self_collisions);
+      print_progress(sim.frame(), config.frames,
+                     t.wall_seconds > 0 ? t.frames / t.wall_seconds : 0.0, t.self_collisions);
     }
     if (g_interrupted != 0 && f + 1 < config.frames) {
       interrupted = true;
@@ -146,16 +157,23 @@ const CommandRegistration registration{
     "simulate", [](CLI::App& app) -> std::function<int()> {
       CLI::App* cmd = app.add_subcommand("simulate", "Run the arm-sleeve cloth simulation");
       auto o = std::make_shared<SimulateOptions>();
-      cmd->add_option("--scene", o->scene, "Scene file (JSON); default: built-in scene (scenes/sleeve.json)");
+      cmd->add_option("--scene", o->scene,
+                      "Scene file (JSON); default: built-in scene (scenes/sleeve.json)");
       cmd->add_option("--gesture", o->gesture, "Gesture: elbow, raise or twist");
-      cmd->add_option("--frames", o->frames, "Frames to simulate (at 30 fps by default)")->check(CLI::NonNegativeNumber);
-      cmd->add_option("--method", o->method, "Detection preset: basic, curtis, tang or paper")->capture_default_str();
+      cmd->add_option("--frames", o->frames, "Frames to simulate (at 30 fps by default)")
+          ->check(CLI::NonNegativeNumber);
+      cmd->add_option("--method", o->method, "Detection preset: basic, curtis, tang or paper")
+          ->capture_default_str();
       cmd->add_option("--out", o->out, "Output folder")->capture_default_str();
-      cmd->add_option("--rings", o->rings, "Sleeve rings along the arm (scales the mesh)")->check(CLI::Range(2, 1 << 20));
-      cmd->add_option("--segments", o->segments, "Sleeve vertices around the arm")->check(CLI::Range(3, 1 << 20));
-      cmd->add_flag("--check-intersections", o->check_every_step,
-                    "Run the static intersection check after every substep (default: after every frame)");
-      cmd->add_option("--threads", o->threads, "Worker threads (0: all)")->check(CLI::NonNegativeNumber);
+      cmd->add_option("--rings", o->rings, "Sleeve rings along the arm (scales the mesh)")
+          ->check(CLI::Range(2, 1 << 20));
+      cmd->add_option("--segments", o->segments, "Sleeve vertices around the arm")
+          ->check(CLI::Range(3, 1 << 20));
+      cmd->add_flag(
+          "--check-intersections", o->check_every_step,
+          "Run the static intersection check after every substep (default: after every frame)");
+      cmd->add_option("--threads", o->threads, "Worker threads (0: all)")
+          ->check(CLI::NonNegativeNumber);
       return [o] { return run_simulate(*o); };
     }};
 

@@ -54,8 +54,10 @@ struct DetectionOptions {
  private:
   static void add_switch(CLI::App& command, const std::string& name, std::optional<bool>& value,
                          const std::string& what) {
-    command.add_flag_callback("--" + name, [&value] { value = true; }, "Turn on " + what);
-    command.add_flag_callback("--no-" + name, [&value] { value = false; }, "Turn off " + what);
+    command.add_flag_callback(
+        "--" + name, [&value] { value = true; }, "Turn on " + what);
+    command.add_flag_callback(
+        "--no-" + name, [&value] { value = false; }, "Turn off " + what);
   }
 };
 

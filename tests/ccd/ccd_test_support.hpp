@@ -17,13 +17,14 @@
 
 namespace tailor::test {
 
-inline std::string data_dir() { return TAILOR_DATA_DIR; }
+inline std::string data_dir() {
+  return TAILOR_DATA_DIR;
+}
 
 /// Every query CSV under ccd-queries/, sorted.
 inline std::vector<std::string> reference_query_files() {
   std::vector<std::string> files;
-  for (const auto& e :
-       std::filesystem::recursive_directory_iterator(data_dir() + "/ccd-queries")) {
+  for (const auto& e : std::filesystem::recursive_directory_iterator(data_dir() + "/ccd-queries")) {
     if (e.is_regular_file() && e.path().extension() == ".csv") files.push_back(e.path().string());
   }
   std::sort(files.begin(), files.end());
@@ -68,15 +69,21 @@ inline Q3 at(const Vec3& x0, const Vec3& x1, const mpq_class& t) {
   return r;
 }
 
-inline int sign(const mpq_class& x) { return (x > 0) - (x < 0); }
+inline int sign(const mpq_class& x) {
+  return (x > 0) - (x < 0);
+}
 
-inline Q3 sub(const Q3& a, const Q3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+inline Q3 sub(const Q3& a, const Q3& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
 
 inline Q3 crs(const Q3& a, const Q3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
-inline mpq_class dt(const Q3& a, const Q3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline mpq_class dt(const Q3& a, const Q3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 
 /// p on closed segment ab: collinear and inside the bounding box (per coordinate).
 inline bool on_segment(const Q3& p, const Q3& a, const Q3& b) {

@@ -15,8 +15,12 @@ namespace tailor {
 namespace {
 
 constexpr double kTiny = std::numeric_limits<double>::denorm_min();
-double up(double x) { return std::nextafter(x, 2.0 * std::fabs(x) + 1.0); }
-double down(double x) { return std::nextafter(x, -2.0 * std::fabs(x) - 1.0); }
+double up(double x) {
+  return std::nextafter(x, 2.0 * std::fabs(x) + 1.0);
+}
+double down(double x) {
+  return std::nextafter(x, -2.0 * std::fabs(x) - 1.0);
+}
 
 /// Checks the public function, the exact path, the double path (when it answers) and the
 /// scaled queries; `toi` is the true earliest contact when `hit`.
@@ -176,8 +180,7 @@ TEST(CcdDegenerate, EeParallelAndCollinear) {
   expect_ee(ee(a, b, {2, 0, 0}, {3, 0, 0}, a, b, {0.5, 0, 0}, {1.5, 0, 0}), true, 2.0 / 3.0);
   // Parallel one ulp away (coplanar for the whole step, never touching).
   expect_ee(ee(a, b, {2, kTiny, 0}, {3, kTiny, 0}, a, b, {0.5, kTiny, 0}, {1.5, kTiny, 0}), false);
-  expect_ee(ee(a, b, {2, up(0.0), 0}, {3, up(0.0), 0}, a, b, {0.5, up(0.0), 0},
-               {1.5, up(0.0), 0}),
+  expect_ee(ee(a, b, {2, up(0.0), 0}, {3, up(0.0), 0}, a, b, {0.5, up(0.0), 0}, {1.5, up(0.0), 0}),
             false);
   // Collinear, stopping one ulp short of touching at t = 1, or touching exactly.
   expect_ee(ee(a, b, {2, 0, 0}, {3, 0, 0}, a, b, {up(1.0), 0, 0}, {2, 0, 0}), false);
@@ -192,8 +195,7 @@ TEST(CcdDegenerate, EeZeroLengthEdges) {
   // c = d: a point crossing segment ab at t = 0.5, and one ulp beside its end.
   expect_ee(ee(a, b, {0.5, 1, 1}, {0.5, 1, 1}, a, b, {0.5, -1, -1}, {0.5, -1, -1}), true, 0.5);
   expect_ee(ee(a, b, {1, 1, 1}, {1, 1, 1}, a, b, {1, -1, -1}, {1, -1, -1}), true, 0.5);
-  expect_ee(ee(a, b, {up(1.0), 1, 1}, {up(1.0), 1, 1}, a, b, {up(1.0), -1, -1},
-               {up(1.0), -1, -1}),
+  expect_ee(ee(a, b, {up(1.0), 1, 1}, {up(1.0), 1, 1}, a, b, {up(1.0), -1, -1}, {up(1.0), -1, -1}),
             false);
   // Both edges points, meeting at t = 0.5 or missing by one ulp.
   const Vec3 o(0, 0, 0);
@@ -225,8 +227,7 @@ TEST(CcdDegenerate, EeCoplanarCrossing) {
 
 TEST(CcdDegenerate, EeGenericCrossing) {
   const Vec3 a(-1, 0, 0), b(1, 0, 0);
-  expect_ee(ee(a, b, {0.25, -1, 1}, {0.25, 1, 1}, a, b, {0.25, -1, -3}, {0.25, 1, -3}), true,
-            0.25);
+  expect_ee(ee(a, b, {0.25, -1, 1}, {0.25, 1, 1}, a, b, {0.25, -1, -3}, {0.25, 1, -3}), true, 0.25);
   expect_ee(ee(a, b, {0.25, -1, 1}, {0.25, 1, 1}, a, b, {0.25, -1, 0.5}, {0.25, 1, 0.5}), false);
 }
 

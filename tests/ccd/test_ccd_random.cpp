@@ -18,7 +18,9 @@
 namespace tailor {
 namespace {
 
-int count(int release) { return test::sanitized() ? release / 8 : release; }
+int count(int release) {
+  return test::sanitized() ? release / 8 : release;
+}
 
 /// Base seed; TAILOR_TEST_SEED overrides it for longer stress runs.
 std::uint64_t seed(std::uint64_t offset) {
@@ -35,10 +37,14 @@ struct Gen {
   int pick(int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); }
   Vec3 vec(int mode) {
     switch (mode) {
-      case 0: return {uniform(), uniform(), uniform()};
-      case 1: return {small_int(), small_int(), small_int()};
-      case 2: return {quarter(), quarter(), quarter()};
-      default: return {quarter(), quarter(), 0.0};  // coplanar motion in z = 0
+      case 0:
+        return {uniform(), uniform(), uniform()};
+      case 1:
+        return {small_int(), small_int(), small_int()};
+      case 2:
+        return {quarter(), quarter(), quarter()};
+      default:
+        return {quarter(), quarter(), 0.0};  // coplanar motion in z = 0
     }
   }
   /// One coordinate nudged by one ulp up or down.
@@ -160,8 +166,9 @@ TEST_P(CcdRandom, VertexFaceDoubleAgreesWithExact) {
     if (HasFatalFailure()) return;
   }
   RecordProperty("hits", st.hits);
-  std::printf("vf mode %d: %d queries, %d hits, %d decided by the double path, %d oracle contacts\n",
-              mode, st.queries, st.hits, st.double_answers, st.oracle_contacts);
+  std::printf(
+      "vf mode %d: %d queries, %d hits, %d decided by the double path, %d oracle contacts\n", mode,
+      st.queries, st.hits, st.double_answers, st.oracle_contacts);
   if (mode >= 2) {
     EXPECT_GT(st.oracle_contacts, 0);  // the generator does produce exact contacts
   }
@@ -176,8 +183,9 @@ TEST_P(CcdRandom, EdgeEdgeDoubleAgreesWithExact) {
     check_ee({x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7]}, st);
     if (HasFatalFailure()) return;
   }
-  std::printf("ee mode %d: %d queries, %d hits, %d decided by the double path, %d oracle contacts\n",
-              mode, st.queries, st.hits, st.double_answers, st.oracle_contacts);
+  std::printf(
+      "ee mode %d: %d queries, %d hits, %d decided by the double path, %d oracle contacts\n", mode,
+      st.queries, st.hits, st.double_answers, st.oracle_contacts);
   if (mode >= 2) {
     EXPECT_GT(st.oracle_contacts, 0);
   }

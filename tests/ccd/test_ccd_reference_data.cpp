@@ -162,9 +162,8 @@ TEST(CcdCheckCli, ClothFunnelWithTruth) {
 TEST(CcdCheckCli, UnitTestsFolder) {
   const std::string d = test::data_dir() + "/ccd-queries/unit-tests";
   int code = -1;
-  const std::string out = run_cli("ccd-check " + d + "/vertex-face/data_0_0.csv " + d +
-                                      "/edge-edge/data_0_0.csv",
-                                  &code);
+  const std::string out = run_cli(
+      "ccd-check " + d + "/vertex-face/data_0_0.csv " + d + "/edge-edge/data_0_0.csv", &code);
   EXPECT_EQ(code, 0) << out;
   EXPECT_NE(out.find("queries=179 fn=0 fp=0\n"), std::string::npos) << out;
 }

@@ -15,7 +15,9 @@ namespace {
 
 using test::Q3;
 
-Q3 q3(const Vec3& v) { return {mpq_class(v[0]), mpq_class(v[1]), mpq_class(v[2])}; }
+Q3 q3(const Vec3& v) {
+  return {mpq_class(v[0]), mpq_class(v[1]), mpq_class(v[2])};
+}
 
 /// The DESIGN.md formula, exactly.
 StepSign reference_sign(const std::array<Vec3, 8>& x) {

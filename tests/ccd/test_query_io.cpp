@@ -40,8 +40,9 @@ TEST(QueryIo, KindFromPath) {
 TEST(QueryIo, ParsesExactly) {
   // 2^-60 * (2^53 - 1) and a denominator of 2^100 stay exact.
   const std::string path = write_temp(
-      "ok.csv", rows(8, "9007199254740991,1152921504606846976,3,1267650600228229401496703205376,"
-                        "-5,4,1"));
+      "ok.csv", rows(8,
+                     "9007199254740991,1152921504606846976,3,1267650600228229401496703205376,"
+                     "-5,4,1"));
   const CcdQueryFile f = read_ccd_queries(path);
   ASSERT_EQ(f.size(), 1u);
   ASSERT_EQ(f.truth.size(), 1u);

@@ -67,8 +67,8 @@ TEST(ContourTest, OverlappingRibbonIsNotSimple) {
   const MeshBvh bvh(mesh, ribbon.mesh.vertices);
   const NodeContours contours(mesh, bvh);
   ASSERT_TRUE(contours.has_single_loop(0));
-  EXPECT_FALSE(contour_stays_simple(contours.loop(0), ribbon.mesh.vertices, ribbon.x1,
-                                    Vec3::UnitZ()));
+  EXPECT_FALSE(
+      contour_stays_simple(contours.loop(0), ribbon.mesh.vertices, ribbon.x1, Vec3::UnitZ()));
 }
 
 TEST(ContourTest, TouchingContourIsNotSimple) {

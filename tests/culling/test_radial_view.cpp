@@ -50,8 +50,7 @@ void expect_detector_matches_brute_force(const TubeStep& step,
                                          std::int64_t* certified = nullptr) {
   const TriangleMesh mesh(static_cast<Index>(step.mesh.vertices.rows()), step.mesh.faces);
   const CollisionSet truth = brute_force_self_collisions(mesh, step.mesh.vertices, step.x1);
-  SelfCollisionDetector detector(mesh, step.mesh.vertices, DetectionConfig::preset("paper"),
-                                 loops);
+  SelfCollisionDetector detector(mesh, step.mesh.vertices, DetectionConfig::preset("paper"), loops);
   const DetectionResult result = detector.detect(step.mesh.vertices, step.x1);
   ASSERT_EQ(result.collisions.vertex_face.size(), truth.vertex_face.size());
   ASSERT_EQ(result.collisions.edge_edge.size(), truth.edge_edge.size());

@@ -34,9 +34,10 @@ std::vector<DetectionConfig> all_stage_combinations() {
 }
 
 std::string describe(const DetectionConfig& c) {
-  return "cones=" + std::to_string(c.normal_cones) + " adjacency=" +
-         std::to_string(c.adjacency_culling) + " assignment=" +
-         std::to_string(c.feature_assignment) + " boxes=" + std::to_string(c.primitive_boxes) +
+  return "cones=" + std::to_string(c.normal_cones) +
+         " adjacency=" + std::to_string(c.adjacency_culling) +
+         " assignment=" + std::to_string(c.feature_assignment) +
+         " boxes=" + std::to_string(c.primitive_boxes) +
          " filter=" + std::to_string(c.coplanarity_filter) +
          " threads=" + std::to_string(c.threads);
 }

@@ -74,7 +74,8 @@ TEST(IntersectionCheck, FlatGridIsClean) {
 
 TEST(IntersectionCheck, WavyGridIsClean) {
   Grid g = make_grid(20);
-  for (Index v = 0; v < g.x.rows(); ++v) g.x(v, 2) = 0.1 * std::sin(9 * g.x(v, 0)) * std::cos(7 * g.x(v, 1));
+  for (Index v = 0; v < g.x.rows(); ++v)
+    g.x(v, 2) = 0.1 * std::sin(9 * g.x(v, 0)) * std::cos(7 * g.x(v, 1));
   const TriangleMesh mesh(static_cast<Index>(g.x.rows()), g.faces);
   EXPECT_TRUE(check_intersections(mesh, g.x).intersection_free());
 }
@@ -183,24 +184,31 @@ TEST(IntersectionCheck, MatchesBruteForceOnRandomMeshes) {
 void write_obj_file(const std::filesystem::path& p, const Positions& x, const FaceArray& f) {
   std::ofstream out(p);
   out.precision(17);
-  for (Index v = 0; v < x.rows(); ++v) out << "v " << x(v, 0) << ' ' << x(v, 1) << ' ' << x(v, 2) << '\n';
-  for (Index i = 0; i < f.rows(); ++i) out << "f " << f(i, 0) + 1 << ' ' << f(i, 1) + 1 << ' ' << f(i, 2) + 1 << '\n';
+  for (Index v = 0; v < x.rows(); ++v)
+    out << "v " << x(v, 0) << ' ' << x(v, 1) << ' ' << x(v, 2) << '\n';
+  for (Index i = 0; i < f.rows(); ++i)
+    out << "f " << f(i, 0) + 1 << ' ' << f(i, 1) + 1 << ' ' << f(i, 2) + 1 << '\n';
 }
 
 int run_cli(const std::string& args) {
-  const std::string cmd = std::string(TAILOR_CLI_PATH) + " check-intersections " + args + " > /dev/null 2>&1";
+  const std::string cmd =
+      std::string(TAILOR_CLI_PATH) + " check-intersections " + args + " > /dev/null 2>&1";
   const int status = std::system(cmd.c_str());
   return WEXITSTATUS(status);
 }
 
 TEST(IntersectionCheckCli, ExitCodes) {
-  const auto dir = std::filesystem::temp_directory_path() / ("tailor_check_" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("tailor_check_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   Grid g = make_grid(5);
   write_obj_file(dir / "clean.obj", g.x, g.faces);
   g.x.row(12) << 0.9, 0.9, 0.0;
   write_obj_file(dir / "crossed.obj", g.x, g.faces);
-  { std::ofstream bad(dir / "bad.obj"); bad << "v 0 0 0\nf 1 2 3\n"; }
+  {
+    std::ofstream bad(dir / "bad.obj");
+    bad << "v 0 0 0\nf 1 2 3\n";
+  }
   EXPECT_EQ(run_cli((dir / "clean.obj").string()), 0);
   EXPECT_EQ(run_cli((dir / "crossed.obj").string()), 1);
   EXPECT_EQ(run_cli((dir / "clean.obj").string() + " " + (dir / "crossed.obj").string()), 1);

@@ -16,7 +16,9 @@ namespace {
 
 using tailor::testing::sanitized;
 
-Triangle tri(Vec3 a, Vec3 b, Vec3 c) { return {a, b, c}; }
+Triangle tri(Vec3 a, Vec3 b, Vec3 c) {
+  return {a, b, c};
+}
 
 /// Every symmetry the answer must not depend on: order of the triangles, order of the
 /// corners, swapping or negating axes, exact translations and power-of-two scalings.
@@ -30,7 +32,9 @@ void expect_intersect(const Triangle& t, const Triangle& u, bool expected) {
   const auto map = [](const Triangle& a, auto f) { return Triangle{f(a[0]), f(a[1]), f(a[2])}; };
   const auto axes = [](const Vec3& p) { return Vec3(p.z(), p.x(), p.y()); };
   const auto negate = [](const Vec3& p) { return Vec3(-p.x(), p.y(), -p.z()); };
-  const auto scale = [](const Vec3& p) { return Vec3(std::ldexp(p.x(), 7), std::ldexp(p.y(), 7), std::ldexp(p.z(), 7)); };
+  const auto scale = [](const Vec3& p) {
+    return Vec3(std::ldexp(p.x(), 7), std::ldexp(p.y(), 7), std::ldexp(p.z(), 7));
+  };
   const auto shift = [](const Vec3& p) { return Vec3(p.x() + 4.0, p.y() - 8.0, p.z() + 2.0); };
   check(map(t, axes), map(u, axes), "axes rotated");
   check(map(t, negate), map(u, negate), "mirrored");
@@ -43,8 +47,8 @@ void expect_intersect(const Triangle& t, const Triangle& u, bool expected) {
   bool shift_exact = true;
   for (const Triangle* tr : {&t, &u}) {
     for (const Vec3& p : *tr) {
-      shift_exact = shift_exact && exact_sum(p.x(), 4.0) && exact_sum(p.y(), -8.0) &&
-                    exact_sum(p.z(), 2.0);
+      shift_exact =
+          shift_exact && exact_sum(p.x(), 4.0) && exact_sum(p.y(), -8.0) && exact_sum(p.z(), 2.0);
     }
   }
   if (shift_exact) check(map(t, shift), map(u, shift), "translated");
@@ -110,14 +114,14 @@ TEST(OrientationPredicates, FilterAgreesWithExact) {
     }
     ASSERT_EQ(orient2d(a2, b2, c2), exact2);
   }
-  EXPECT_GT(decided, n / 2);   // random inputs are decided by the filter
-  EXPECT_GT(undecided, 0);     // the near-coplanar ones exercise the fallback
+  EXPECT_GT(decided, n / 2);  // random inputs are decided by the filter
+  EXPECT_GT(undecided, 0);    // the near-coplanar ones exercise the fallback
 }
 
 TEST(TriangleIntersection, DisjointAndCrossing) {
-  expect_intersect(kBase, tri({0, 0, 1}, {1, 0, 1}, {0, 1, 1}), false);          // parallel
+  expect_intersect(kBase, tri({0, 0, 1}, {1, 0, 1}, {0, 1, 1}), false);                // parallel
   expect_intersect(kBase, tri({0.25, 0.25, -1}, {0.25, 0.25, 1}, {2, 2, 0.5}), true);  // pierce
-  expect_intersect(kBase, tri({2, 2, -1}, {2, 2, 1}, {3, 3, 0}), false);   // plane crossing, outside
+  expect_intersect(kBase, tri({2, 2, -1}, {2, 2, 1}, {3, 3, 0}), false);  // plane crossing, outside
   // Through each other like two links of a chain.
   expect_intersect(tri({-1, 0, 0}, {1, 0, 0}, {0, 2, 0}), tri({0, 1, -1}, {0, 1, 1}, {0, -1, 0}),
                    true);
@@ -145,20 +149,24 @@ TEST(TriangleIntersection, OneUlpOnATiltedPlane) {
   // A triangle whose lowest corner sits exactly on, one ulp above, one ulp below.
   EXPECT_TRUE(triangles_intersect(t, tri({p, 0.3, p}, {p, 0.3, 2}, {p + 0.1, 0.2, 2})));
   const bool above_hits = triangles_intersect(t, tri({p, 0.3, up}, {p, 0.3, 2}, {p + 0.1, 0.2, 2}));
-  const bool below_hits = triangles_intersect(t, tri({p, 0.3, down}, {p, 0.3, 2}, {p + 0.1, 0.2, 2}));
+  const bool below_hits =
+      triangles_intersect(t, tri({p, 0.3, down}, {p, 0.3, 2}, {p + 0.1, 0.2, 2}));
   EXPECT_FALSE(above_hits);
   EXPECT_TRUE(below_hits);
 }
 
 TEST(TriangleIntersection, Coplanar) {
   expect_intersect(kBase, tri({0.25, 0.25, 0}, {2, 0.25, 0}, {0.25, 2, 0}), true);  // overlap
-  expect_intersect(kBase, tri({0.125, 0.125, 0}, {0.25, 0.125, 0}, {0.125, 0.25, 0}), true);  // inside
-  expect_intersect(kBase, tri({1, 0, 0}, {2, 0, 0}, {1, 1, 0}), true);        // touch at a corner
-  expect_intersect(kBase, tri({0.5, 0.5, 0}, {1, 1, 0}, {0, 1, 0}), true);    // corner on the hypotenuse
-  expect_intersect(kBase, tri({1, 0, 0}, {0, 1, 0}, {1, 1, 0}), true);        // share the hypotenuse
+  expect_intersect(kBase, tri({0.125, 0.125, 0}, {0.25, 0.125, 0}, {0.125, 0.25, 0}),
+                   true);                                               // inside
+  expect_intersect(kBase, tri({1, 0, 0}, {2, 0, 0}, {1, 1, 0}), true);  // touch at a corner
+  expect_intersect(kBase, tri({0.5, 0.5, 0}, {1, 1, 0}, {0, 1, 0}),
+                   true);                                               // corner on the hypotenuse
+  expect_intersect(kBase, tri({1, 0, 0}, {0, 1, 0}, {1, 1, 0}), true);  // share the hypotenuse
   expect_intersect(kBase, tri({0.75, 0.75, 0}, {2, 0.75, 0}, {0.75, 2, 0}), false);  // just outside
   // Star of David: no corner inside the other, edges cross.
-  expect_intersect(tri({0, 0, 0}, {4, 0, 0}, {2, 3, 0}), tri({0, 2, 0}, {4, 2, 0}, {2, -1, 0}), true);
+  expect_intersect(tri({0, 0, 0}, {4, 0, 0}, {2, 3, 0}), tri({0, 2, 0}, {4, 2, 0}, {2, -1, 0}),
+                   true);
   // One ulp off the hypotenuse, inside the plane.
   const double off = std::nextafter(0.5, 1.0);
   expect_intersect(kBase, tri({off, 0.5, 0}, {1, 1, 0}, {0.75, 2, 0}), false);
@@ -179,8 +187,8 @@ TEST(TriangleIntersection, DegenerateTriangles) {
   const Triangle s1 = tri({0, 0, 0}, {2, 2, 2}, {1, 1, 1});
   expect_intersect(s1, tri({1.5, 1.5, 1.5}, {3, 3, 3}, {4, 4, 4}), true);
   expect_intersect(s1, tri({2.5, 2.5, 2.5}, {3, 3, 3}, {4, 4, 4}), false);
-  expect_intersect(s1, tri({1, 0, 1}, {1, 2, 1}, {1, 1, 1}), true);    // cross at (1,1,1)
-  expect_intersect(s1, tri({1, 0, 2}, {1, 2, 2}, {1, 1, 2}), false);   // skew
+  expect_intersect(s1, tri({1, 0, 1}, {1, 2, 1}, {1, 1, 1}), true);   // cross at (1,1,1)
+  expect_intersect(s1, tri({1, 0, 2}, {1, 2, 2}, {1, 1, 2}), false);  // skew
   EXPECT_TRUE(is_degenerate_triangle(s1));
   EXPECT_FALSE(is_degenerate_triangle(kBase));
   EXPECT_TRUE(is_degenerate_triangle(tri({1, 2, 3}, {1, 2, 3}, {1, 2, 3})));
@@ -189,7 +197,7 @@ TEST(TriangleIntersection, DegenerateTriangles) {
 TEST(TriangleIntersection, SegmentsAndSegmentTriangle) {
   EXPECT_TRUE(segments_intersect({0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, 1, 0}));
   EXPECT_FALSE(segments_intersect({0, 0, 0}, {1, 1, 0}, {1, 0, 1}, {0, 1, 1}));
-  EXPECT_TRUE(segments_intersect({0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {2, 0, 0}));   // end to end
+  EXPECT_TRUE(segments_intersect({0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {2, 0, 0}));  // end to end
   EXPECT_FALSE(segments_intersect({0, 0, 0}, {1, 0, 0}, {1.5, 0, 0}, {2, 0, 0}));
   EXPECT_TRUE(segments_intersect({0.5, 0, 0}, {0.5, 0, 0}, {0, 0, 0}, {1, 0, 0}));  // a point
   EXPECT_TRUE(segment_triangle_intersect({0.25, 0.25, 1}, {0.25, 0.25, 0}, kBase));
@@ -231,7 +239,7 @@ TEST(TriangleIntersection, SharedEdge) {
 
 TEST(TriangleIntersection, ClassifyFacePair) {
   Positions x(6, 3);
-  x << 0, 0, 0,  1, 0, 0,  0, 1, 0,  0.5, 2, 0,  0, 0, 1,  -1, -1, 0;
+  x << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0.5, 2, 0, 0, 0, 1, -1, -1, 0;
   using V = TrianglePairVerdict;
   EXPECT_EQ(classify_face_pair(x, {0, 1, 2}, {1, 0, 4}), V::disjoint);      // hinge
   EXPECT_EQ(classify_face_pair(x, {0, 1, 2}, {3, 1, 0}), V::intersecting);  // folded, ids rotated

@@ -13,7 +13,9 @@
 namespace tailor {
 namespace {
 
-double deg(double d) { return d * std::numbers::pi / 180; }
+double deg(double d) {
+  return d * std::numbers::pi / 180;
+}
 
 TEST(Arm, SurfaceIsClosedManifoldAndArmSized) {
   const Arm arm;
@@ -27,7 +29,7 @@ TEST(Arm, SurfaceIsClosedManifoldAndArmSized) {
   // Closed genus-0 surface: V - E + F = 2.
   EXPECT_EQ(mesh.num_vertices() - mesh.num_edges() + mesh.num_faces(), 2);
   const Positions& p = arm.rest_positions();
-  EXPECT_NEAR(p.col(0).minCoeff(), -0.05, 1e-6);  // shoulder cap
+  EXPECT_NEAR(p.col(0).minCoeff(), -0.05, 1e-6);         // shoulder cap
   EXPECT_NEAR(p.col(0).maxCoeff(), 0.57 + 0.027, 2e-3);  // wrist cap
 }
 
@@ -90,7 +92,8 @@ TEST(Arm, ElbowFlexionMovesTheWristForward) {
   const auto m = arm.skinning_transforms(pose);
   for (Eigen::Index i = 0; i < skinned.rows(); ++i) {
     if (arm.forearm_weights()[i] == 1.0) {
-      EXPECT_TRUE(skinned.row(i).transpose().isApprox(m[1] * Vec3(arm.rest_positions().row(i).transpose()), 1e-12));
+      EXPECT_TRUE(skinned.row(i).transpose().isApprox(
+          m[1] * Vec3(arm.rest_positions().row(i).transpose()), 1e-12));
     }
   }
 }
@@ -107,7 +110,8 @@ TEST(Arm, SkinnedSurfaceStaysWithinOneAndAHalfMillimetresOfThePosedImplicitArm) 
     for (Eigen::Index i = 0; i < y.rows(); ++i) {
       // The blend pulls vertices inwards but not exactly: up to ~1.3 mm out, inside
       // the 3 mm the cloth is kept from the implicit arm.
-      ASSERT_LE(arm.signed_distance(s, y.row(i).transpose()), 1.5e-3) << "flexion " << flex << " vertex " << i;
+      ASSERT_LE(arm.signed_distance(s, y.row(i).transpose()), 1.5e-3)
+          << "flexion " << flex << " vertex " << i;
     }
   }
 }
@@ -180,7 +184,8 @@ TEST(Gesture, RaiseAndTwistMoveTheirJoints) {
   params.name = "twist";
   const Gesture twist = make_gesture(params);
   double max_twist = 0;
-  for (const Keyframe& k : twist.keyframes()) max_twist = std::max(max_twist, std::abs(k.pose.forearm_twist));
+  for (const Keyframe& k : twist.keyframes())
+    max_twist = std::max(max_twist, std::abs(k.pose.forearm_twist));
   EXPECT_NEAR(max_twist, deg(70), 1e-12);
 }
 

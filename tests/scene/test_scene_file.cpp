@@ -81,7 +81,8 @@ TEST(SceneFile, UnknownFieldIsNamedWithItsPathAndTheFile) {
   const std::string top = load_error("unknown_top.json", R"({"framez": 3})");
   EXPECT_NE(top.find("unknown field 'framez'"), std::string::npos) << top;
   EXPECT_NE(top.find("unknown_top.json"), std::string::npos) << top;
-  const std::string nested = load_error("unknown_nested.json", R"({"sleeve": {"material": {"colour": 1}}})");
+  const std::string nested =
+      load_error("unknown_nested.json", R"({"sleeve": {"material": {"colour": 1}}})");
   EXPECT_NE(nested.find("'sleeve.material.colour'"), std::string::npos) << nested;
   EXPECT_NE(nested.find("unknown_nested.json"), std::string::npos) << nested;
 }
@@ -90,7 +91,8 @@ TEST(SceneFile, BadValueIsNamed) {
   const std::string rings = load_error("bad_rings.json", R"({"sleeve": {"rings": 1}})");
   EXPECT_NE(rings.find("'sleeve.rings'"), std::string::npos) << rings;
   EXPECT_NE(rings.find("bad_rings.json"), std::string::npos) << rings;
-  const std::string length = load_error("bad_length.json", R"({"arm": {"upper_arm_length": -0.3}})");
+  const std::string length =
+      load_error("bad_length.json", R"({"arm": {"upper_arm_length": -0.3}})");
   EXPECT_NE(length.find("'arm.upper_arm_length'"), std::string::npos) << length;
   const std::string fraction = load_error("bad_int.json", R"({"frames": 2.5})");
   EXPECT_NE(fraction.find("'frames'"), std::string::npos) << fraction;
@@ -104,7 +106,8 @@ TEST(SceneFile, BadValueIsNamed) {
 }
 
 TEST(SceneFile, WrongTypeIsNamed) {
-  const std::string number = load_error("type_number.json", R"({"arm": {"forearm_length": "long"}})");
+  const std::string number =
+      load_error("type_number.json", R"({"arm": {"forearm_length": "long"}})");
   EXPECT_NE(number.find("'arm.forearm_length'"), std::string::npos) << number;
   EXPECT_NE(number.find("must be a number"), std::string::npos) << number;
   EXPECT_NE(number.find("type_number.json"), std::string::npos) << number;

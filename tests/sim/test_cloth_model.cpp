@@ -26,7 +26,8 @@ Sheet make_sheet(int n, double size) {
   Sheet s;
   s.rest.resize(n * n, 3);
   for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) s.rest.row(i * n + j) << size * j / (n - 1), 0.0, size * i / (n - 1);
+    for (int j = 0; j < n; ++j)
+      s.rest.row(i * n + j) << size * j / (n - 1), 0.0, size * i / (n - 1);
   }
   FaceArray f(2 * (n - 1) * (n - 1), 3);
   int k = 0;
@@ -57,7 +58,9 @@ TEST(DihedralAngle, GradientMatchesFiniteDifferences) {
       auto q = p, r = p;
       q[k / 3][k % 3] += h;
       r[k / 3][k % 3] -= h;
-      const double fd = (dihedral_angle(q[0], q[1], q[2], q[3]) - dihedral_angle(r[0], r[1], r[2], r[3])) / (2 * h);
+      const double fd =
+          (dihedral_angle(q[0], q[1], q[2], q[3]) - dihedral_angle(r[0], r[1], r[2], r[3])) /
+          (2 * h);
       EXPECT_NEAR(g[k], fd, 1e-5 * (1 + std::abs(fd))) << "trial " << trial << " component " << k;
     }
   }
@@ -80,7 +83,8 @@ TEST(ClothModel, ForcesAreMinusEnergyGradient) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1, 1);
   Positions x = s.rest;
-  for (Eigen::Index i = 0; i < x.rows(); ++i) x.row(i) += 0.02 * Eigen::RowVector3d(u(rng), u(rng), u(rng));
+  for (Eigen::Index i = 0; i < x.rows(); ++i)
+    x.row(i) += 0.02 * Eigen::RowVector3d(u(rng), u(rng), u(rng));
   const Positions f = model.elastic_forces(x);
   const double h = 1e-7;
   for (Eigen::Index i = 0; i < x.rows(); ++i) {
@@ -161,9 +165,13 @@ void run_hanging_sheet(ClothSolver solver, int substeps, int frames, bool weft_d
   EXPECT_LT(model.energy(x, v, g).kinetic, frames >= 90 ? 0.01 : 0.05);
 }
 
-TEST(ClothModel, HangingSheetDirectSolver) { run_hanging_sheet(ClothSolver::direct, 5, sanitized() ? 30 : 90); }
+TEST(ClothModel, HangingSheetDirectSolver) {
+  run_hanging_sheet(ClothSolver::direct, 5, sanitized() ? 30 : 90);
+}
 
-TEST(ClothModel, HangingSheetWeftDown) { run_hanging_sheet(ClothSolver::direct, 5, sanitized() ? 30 : 90, true); }
+TEST(ClothModel, HangingSheetWeftDown) {
+  run_hanging_sheet(ClothSolver::direct, 5, sanitized() ? 30 : 90, true);
+}
 
 TEST(ClothModel, HangingSheetConjugateGradient) {
   run_hanging_sheet(ClothSolver::iterative, 5, sanitized() ? 30 : 90);

@@ -43,7 +43,8 @@ void add_grid(int nx, int ny, Place place, Positions& x, std::vector<std::array<
 
 FaceArray to_faces(const std::vector<std::array<Index, 3>>& faces) {
   FaceArray f(static_cast<Index>(faces.size()), 3);
-  for (std::size_t i = 0; i < faces.size(); ++i) f.row(static_cast<Index>(i)) << faces[i][0], faces[i][1], faces[i][2];
+  for (std::size_t i = 0; i < faces.size(); ++i)
+    f.row(static_cast<Index>(i)) << faces[i][0], faces[i][1], faces[i][2];
   return f;
 }
 
@@ -58,7 +59,8 @@ std::int64_t obstacle_contacts(const TriangleMesh& cloth, const Positions& x0, c
     for (Index f = 0; f < obs.num_faces(); ++f) {
       const auto F = obs.faces().row(f);
       n += vertex_face_ccd({r(x0, v), r(y0, F(0)), r(y0, F(1)), r(y0, F(2)), r(x1, v), r(y1, F(0)),
-                            r(y1, F(1)), r(y1, F(2))}).hit;
+                            r(y1, F(1)), r(y1, F(2))})
+               .hit;
     }
   }
   for (Index f = 0; f < cloth.num_faces(); ++f) {
@@ -66,7 +68,8 @@ std::int64_t obstacle_contacts(const TriangleMesh& cloth, const Positions& x0, c
     if (pinned[F(0)] || pinned[F(1)] || pinned[F(2)]) continue;
     for (Index v = 0; v < obs.num_vertices(); ++v) {
       n += vertex_face_ccd({r(y0, v), r(x0, F(0)), r(x0, F(1)), r(x0, F(2)), r(y1, v), r(x1, F(0)),
-                            r(x1, F(1)), r(x1, F(2))}).hit;
+                            r(x1, F(1)), r(x1, F(2))})
+               .hit;
     }
   }
   for (Index e = 0; e < cloth.num_edges(); ++e) {
@@ -74,22 +77,23 @@ std::int64_t obstacle_contacts(const TriangleMesh& cloth, const Positions& x0, c
     if (pinned[E(0)] || pinned[E(1)]) continue;
     for (Index g = 0; g < obs.num_edges(); ++g) {
       const auto G = obs.edges().row(g);
-      n += edge_edge_ccd({r(x0, E(0)), r(x0, E(1)), r(y0, G(0)), r(y0, G(1)), r(x1, E(0)), r(x1, E(1)),
-                          r(y1, G(0)), r(y1, G(1))}).hit;
+      n += edge_edge_ccd({r(x0, E(0)), r(x0, E(1)), r(y0, G(0)), r(y0, G(1)), r(x1, E(0)),
+                          r(x1, E(1)), r(y1, G(0)), r(y1, G(1))})
+               .hit;
     }
   }
   return n;
 }
 
 void print(const ContactStats& s) {
-  std::printf("self %lld obstacle %lld repulsions %lld impulses %lld passes %lld zones %lld "
-              "zone_passes %lld last_resort %d reverted %lld following %lld unresolved %lld "
-              "detect %.2f ms response %.2f ms\n",
-              (long long)s.self_collisions, (long long)s.obstacle_collisions, (long long)s.repulsions,
-              (long long)s.impulses, (long long)s.impulse_iterations, (long long)s.impact_zones,
-              (long long)s.zone_iterations, int(s.last_resort), (long long)s.reverted_vertices,
-              (long long)s.arm_following_vertices, (long long)s.unresolved, s.detection_ms,
-              s.response_ms);
+  std::printf(
+      "self %lld obstacle %lld repulsions %lld impulses %lld passes %lld zones %lld "
+      "zone_passes %lld last_resort %d reverted %lld following %lld unresolved %lld "
+      "detect %.2f ms response %.2f ms\n",
+      (long long)s.self_collisions, (long long)s.obstacle_collisions, (long long)s.repulsions,
+      (long long)s.impulses, (long long)s.impulse_iterations, (long long)s.impact_zones,
+      (long long)s.zone_iterations, int(s.last_resort), (long long)s.reverted_vertices,
+      (long long)s.arm_following_vertices, (long long)s.unresolved, s.detection_ms, s.response_ms);
 }
 
 ContactParams params_for_tests() {
@@ -107,9 +111,15 @@ TEST(ContactSolver, TwoPatchesDrivenThroughEachOther) {
   Positions x0(0, 3);
   std::vector<std::array<Index, 3>> faces;
   const int n = sanitized() ? 6 : 9;
-  add_grid(n, n, [&](int i, int j) { return Vec3(i / (n - 1.0), j / (n - 1.0), 0.0); }, x0, faces);
+  add_grid(
+      n, n, [&](int i, int j) { return Vec3(i / (n - 1.0), j / (n - 1.0), 0.0); }, x0, faces);
   const Index b_first = static_cast<Index>(x0.rows());
-  add_grid(n, n, [&](int i, int j) { return Vec3(0.1 + 0.8 * i / (n - 1.0), 0.05 + 0.8 * j / (n - 1.0), 0.01); }, x0, faces);
+  add_grid(
+      n, n,
+      [&](int i, int j) {
+        return Vec3(0.1 + 0.8 * i / (n - 1.0), 0.05 + 0.8 * j / (n - 1.0), 0.01);
+      },
+      x0, faces);
   const TriangleMesh mesh(static_cast<Index>(x0.rows()), to_faces(faces));
   Eigen::VectorXd masses = Eigen::VectorXd::Constant(x0.rows(), 0.01);
   std::vector<char> pinned(static_cast<std::size_t>(x0.rows()), 0);
@@ -199,16 +209,22 @@ TEST(ContactSolver, FoldedStripPressedFlat) {
 void cloth_on_rising_box(int impulse_passes, int zone_passes, bool expect_rest, int steps) {
   Positions box(8, 3);
   const double lo = -0.1, hi = 0.1;
-  for (int k = 0; k < 8; ++k) box.row(k) << ((k & 1) ? hi : lo), ((k & 2) ? hi : lo), ((k & 4) ? 0.0 : -0.2);
+  for (int k = 0; k < 8; ++k)
+    box.row(k) << ((k & 1) ? hi : lo), ((k & 2) ? hi : lo), ((k & 4) ? 0.0 : -0.2);
   FaceArray bf(12, 3);  // outward orientation
-  bf << 0, 2, 1, 1, 2, 3,  4, 5, 6, 5, 7, 6,  0, 1, 4, 1, 5, 4,  2, 6, 3, 3, 6, 7,  0, 4, 2, 2, 4, 6,
-      1, 3, 5, 3, 7, 5;
+  bf << 0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1,
+      3, 5, 3, 7, 5;
   const TriangleMesh box_mesh(8, bf);
 
   Positions x(0, 3);
   std::vector<std::array<Index, 3>> faces;
   const int n = 12;
-  add_grid(n, n, [&](int i, int j) { return Vec3(-0.15 + 0.3 * i / (n - 1.0) + 0.003, -0.15 + 0.3 * j / (n - 1.0) + 0.002, 0.01); }, x, faces);
+  add_grid(
+      n, n,
+      [&](int i, int j) {
+        return Vec3(-0.15 + 0.3 * i / (n - 1.0) + 0.003, -0.15 + 0.3 * j / (n - 1.0) + 0.002, 0.01);
+      },
+      x, faces);
   const TriangleMesh cloth(static_cast<Index>(x.rows()), to_faces(faces));
   const Eigen::VectorXd masses = Eigen::VectorXd::Constant(x.rows(), 0.001);
   const std::vector<char> pinned(static_cast<std::size_t>(x.rows()), 0);
@@ -255,7 +271,9 @@ void cloth_on_rising_box(int impulse_passes, int zone_passes, bool expect_rest, 
   }
 }
 
-TEST(ContactSolver, ClothFallingOntoARisingBox) { cloth_on_rising_box(10, 50, true, sanitized() ? 4 : 20); }
+TEST(ContactSolver, ClothFallingOntoARisingBox) {
+  cloth_on_rising_box(10, 50, true, sanitized() ? 4 : 20);
+}
 
 TEST(ContactSolver, ClothOnRisingBoxZonesAndLastResort) {
   const int steps = sanitized() ? 3 : 8;
@@ -271,9 +289,13 @@ void chaotic_step(int seed, int impulse_passes, int zone_passes, bool pin_some) 
   Positions x0(0, 3);
   std::vector<std::array<Index, 3>> faces;
   const int n = 8;
-  add_grid(n, n, [&](int i, int j) {
-    return Vec3(i / (n - 1.0), j / (n - 1.0), 0.05 * std::sin(5.0 * i / n + seed) * std::cos(4.0 * j / n));
-  }, x0, faces);
+  add_grid(
+      n, n,
+      [&](int i, int j) {
+        return Vec3(i / (n - 1.0), j / (n - 1.0),
+                    0.05 * std::sin(5.0 * i / n + seed) * std::cos(4.0 * j / n));
+      },
+      x0, faces);
   const TriangleMesh mesh(static_cast<Index>(x0.rows()), to_faces(faces));
   Eigen::VectorXd masses = Eigen::VectorXd::Constant(x0.rows(), 0.002);
   std::vector<char> pinned(static_cast<std::size_t>(x0.rows()), 0);
@@ -320,13 +342,15 @@ TEST(ContactSolver, ChaoticMotionAllStages) {
 TEST(ContactSolver, RejectsBadInput) {
   Positions x(0, 3);
   std::vector<std::array<Index, 3>> faces;
-  add_grid(3, 3, [](int i, int j) { return Vec3(i, j, 0); }, x, faces);
+  add_grid(
+      3, 3, [](int i, int j) { return Vec3(i, j, 0); }, x, faces);
   const TriangleMesh mesh(static_cast<Index>(x.rows()), to_faces(faces));
   const auto make_bad = [&] {
     ContactSolver bad(mesh, x, Eigen::VectorXd::Ones(4), DetectionConfig{}, ContactParams{});
   };
   EXPECT_THROW(make_bad(), InputError);
-  ContactSolver solver(mesh, x, Eigen::VectorXd::Ones(x.rows()), DetectionConfig{}, ContactParams{});
+  ContactSolver solver(mesh, x, Eigen::VectorXd::Ones(x.rows()), DetectionConfig{},
+                       ContactParams{});
   Positions wrong = x.topRows(3);
   EXPECT_THROW(solver.resolve(x, wrong, KinematicObstacle{}, 0.01), InputError);
 }

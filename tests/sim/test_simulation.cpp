@@ -114,10 +114,13 @@ TEST(Simulation, PinnedRingFollowsTheArm) {
   const ArmPose pose = scene.gesture().pose_at(sim.time());
   const auto ring = scene.sleeve().ring(0);
   Positions rest(static_cast<Eigen::Index>(ring.size()), 3);
-  for (std::size_t i = 0; i < ring.size(); ++i) rest.row(static_cast<Eigen::Index>(i)) = scene.sleeve().rest.row(ring[i]);
+  for (std::size_t i = 0; i < ring.size(); ++i)
+    rest.row(static_cast<Eigen::Index>(i)) = scene.sleeve().rest.row(ring[i]);
   const Positions expected = scene.arm().skin_points(rest, pose);
   for (std::size_t i = 0; i < ring.size(); ++i) {
-    EXPECT_LT((sim.cloth_positions().row(ring[i]) - expected.row(static_cast<Eigen::Index>(i))).norm(), 1e-12);
+    EXPECT_LT(
+        (sim.cloth_positions().row(ring[i]) - expected.row(static_cast<Eigen::Index>(i))).norm(),
+        1e-12);
   }
   EXPECT_GT(pose.shoulder_raise, 0.1);  // the arm did move
 }
@@ -126,7 +129,8 @@ TEST(Simulation, SummaryHasTheRequiredFields) {
   Simulation sim(small_scene("elbow"));
   sim.step_frame();
   const nlohmann::json s = simulation_summary(sim, false);
-  for (const char* key : {"frames", "steps", "self_collisions", "intersections", "interrupted", "ms_per_step"}) {
+  for (const char* key :
+       {"frames", "steps", "self_collisions", "intersections", "interrupted", "ms_per_step"}) {
     EXPECT_TRUE(s.contains(key)) << key;
   }
   for (const char* key : {"forces_solve", "detection", "response", "total"}) {
@@ -169,8 +173,8 @@ TEST(SimulateCommand, WritesFramesStepsAndSummary) {
   const fs::path out = fs::temp_directory_path() / "tailor_test_simulate";
   fs::remove_all(out);
   const int frames = 3;
-  ASSERT_EQ(run_cli({"simulate", "--frames", std::to_string(frames), "--rings", "6", "--segments", "10",
-                     "--out", out.string(), "--check-intersections", "--threads", "1"}),
+  ASSERT_EQ(run_cli({"simulate", "--frames", std::to_string(frames), "--rings", "6", "--segments",
+                     "10", "--out", out.string(), "--check-intersections", "--threads", "1"}),
             0);
   for (int f = 0; f <= frames; ++f) {
     EXPECT_TRUE(fs::exists(out / frame_file_name("cloth", f))) << f;

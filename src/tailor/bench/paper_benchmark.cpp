@@ -69,13 +69,12 @@ std::string PaperBenchmark::fig1_csv() const {
 }
 
 std::string PaperBenchmark::fig1_markdown() const {
-  std::string md =
-      "| high-level culling | mean CTPs per step | max |\n|---|---:|---:|\n";
-  for (const auto& [label, name] : std::vector<std::pair<std::string, std::string>>{
-           {"basic BVH", "basic"},
-           {"+ normal cones", "normal_cones"},
-           {"+ radial view", "radial_view"},
-           {"+ isolated set", "paper"}}) {
+  std::string md = "| high-level culling | mean CTPs per step | max |\n|---|---:|---:|\n";
+  for (const auto& [label, name] :
+       std::vector<std::pair<std::string, std::string>>{{"basic BVH", "basic"},
+                                                        {"+ normal cones", "normal_cones"},
+                                                        {"+ radial view", "radial_view"},
+                                                        {"+ isolated set", "paper"}}) {
     const auto& ctps = run(name).ctps;
     md += fmt::format("| {} | {:.1f} | {} |\n", label, mean(ctps),
                       ctps.empty() ? 0 : *std::max_element(ctps.begin(), ctps.end()));
@@ -98,17 +97,18 @@ std::string PaperBenchmark::table1_markdown() const {
     const char* name;
     double vf, ee, fps;
   };
-  const Published published[] = {
-      {"basic", 1122, 2056, 12.70}, {"curtis", 74, 45, 32}, {"tang", 44, 338, 37.54},
-      {"paper", 31, 137, 34.22}};
+  const Published published[] = {{"basic", 1122, 2056, 12.70},
+                                 {"curtis", 74, 45, 32},
+                                 {"tang", 44, 338, 37.54},
+                                 {"paper", 31, 137, 34.22}};
   std::string md =
       "| method | VF (ours) | EE (ours) | detect ms | step ms | fps (ours) | VF (paper) | "
       "EE (paper) | fps (paper) |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Published& p : published) {
     const PaperRun& r = run(p.name);
     md += fmt::format("| {} | {:.1f} | {:.1f} | {:.3f} | {:.3f} | {:.2f} | {} | {} | {} |\n",
-                      p.name, mean(r.vf), mean(r.ee), mean(r.detect_ms), mean(r.step_ms),
-                      r.fps(), p.vf, p.ee, p.fps);
+                      p.name, mean(r.vf), mean(r.ee), mean(r.detect_ms), mean(r.step_ms), r.fps(),
+                      p.vf, p.ee, p.fps);
   }
   return md;
 }
@@ -145,12 +145,9 @@ PaperBenchmark run_paper_benchmark(
     const SceneConfig& scene, const std::function<void(const std::string&, int, int)>& progress) {
   PaperBenchmark bench;
   const std::vector<std::pair<std::string, DetectionConfig>> configs{
-      {"basic", DetectionConfig::preset("basic")},
-      {"curtis", DetectionConfig::preset("curtis")},
-      {"tang", DetectionConfig::preset("tang")},
-      {"paper", DetectionConfig::preset("paper")},
-      {"normal_cones", high_level(true, false)},
-      {"radial_view", high_level(true, true)}};
+      {"basic", DetectionConfig::preset("basic")}, {"curtis", DetectionConfig::preset("curtis")},
+      {"tang", DetectionConfig::preset("tang")},   {"paper", DetectionConfig::preset("paper")},
+      {"normal_cones", high_level(true, false)},   {"radial_view", high_level(true, true)}};
   for (const auto& [name, config] : configs) {
     PaperRun run;
     run.name = name;
@@ -174,14 +171,13 @@ PaperBenchmark run_paper_benchmark(
     run.wall_seconds = simulation.totals().wall_seconds;
     if (!bench.runs.empty() && bench.same_collisions) {
       const PaperRun& first = bench.runs.front();
-      for (std::size_t i = 0; i < std::min(first.self_collisions.size(),
-                                           run.self_collisions.size());
-           ++i) {
+      for (std::size_t i = 0;
+           i < std::min(first.self_collisions.size(), run.self_collisions.size()); ++i) {
         if (first.self_collisions[i] != run.self_collisions[i]) {
           bench.same_collisions = false;
-          bench.mismatch = fmt::format("step {}: {} found {} self-collisions, {} found {}", i,
-                                       first.name, first.self_collisions[i], name,
-                                       run.self_collisions[i]);
+          bench.mismatch =
+              fmt::format("step {}: {} found {} self-collisions, {} found {}", i, first.name,
+                          first.self_collisions[i], name, run.self_collisions[i]);
           break;
         }
       }

@@ -19,7 +19,7 @@ struct PaperRun {
   std::string name;
   DetectionConfig config;
   std::vector<std::int64_t> ctps, vf, ee, self_collisions;  ///< per substep (first pass)
-  std::vector<double> detect_ms, step_ms;                     ///< per substep
+  std::vector<double> detect_ms, step_ms;                   ///< per substep
   double wall_seconds = 0;
   int frames = 0;
   double fps() const { return wall_seconds > 0 ? frames / wall_seconds : 0; }

@@ -87,8 +87,8 @@ std::vector<ScaleRow> run_scale_benchmark(const ScaleOptions& options) {
   }
   for (const std::string name : {"cloth", "sleeve"}) {
     for (Index target : sizes) {
-      const ScaleScene scene = name == "cloth" ? crumpling_cloth_scene(target)
-                                               : sleeve_scene(target);
+      const ScaleScene scene =
+          name == "cloth" ? crumpling_cloth_scene(target) : sleeve_scene(target);
       const TriangleMesh mesh(static_cast<Index>(scene.mesh.vertices.rows()), scene.mesh.faces);
       for (int threads : {1, 2}) {
         if (options.progress) {

@@ -62,10 +62,14 @@ Axis make_axis(const std::vector<PlotSeries>& series, bool use_x, bool log) {
 std::string escape(const std::string& text) {
   std::string out;
   for (char c : text) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else out += c;
+    if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '&')
+      out += "&amp;";
+    else
+      out += c;
   }
   return out;
 }
@@ -82,24 +86,28 @@ std::string LinePlot::to_svg() const {
       kWidth, kHeight, kLeft, escape(title));
   for (double t : ax.ticks()) {
     const double x = ax.map(t, x0, x1);
-    svg += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1}\" x2=\"{0:.1f}\" y2=\"{2}\" stroke=\"#ddd\"/>"
-                       "<text x=\"{0:.1f}\" y=\"{3}\" text-anchor=\"middle\">{4:g}</text>\n",
-                       x, y0, y1, y0 + 16, t);
+    svg += fmt::format(
+        "<line x1=\"{0:.1f}\" y1=\"{1}\" x2=\"{0:.1f}\" y2=\"{2}\" stroke=\"#ddd\"/>"
+        "<text x=\"{0:.1f}\" y=\"{3}\" text-anchor=\"middle\">{4:g}</text>\n",
+        x, y0, y1, y0 + 16, t);
   }
   for (double t : ay.ticks()) {
     const double y = ay.map(t, y0, y1);
-    svg += fmt::format("<line x1=\"{1}\" y1=\"{0:.1f}\" x2=\"{2}\" y2=\"{0:.1f}\" stroke=\"#ddd\"/>"
-                       "<text x=\"{3}\" y=\"{0:.1f}\" text-anchor=\"end\" dy=\"4\">{4:g}</text>\n",
-                       y, x0, x1, x0 - 6, t);
+    svg += fmt::format(
+        "<line x1=\"{1}\" y1=\"{0:.1f}\" x2=\"{2}\" y2=\"{0:.1f}\" stroke=\"#ddd\"/>"
+        "<text x=\"{3}\" y=\"{0:.1f}\" text-anchor=\"end\" dy=\"4\">{4:g}</text>\n",
+        y, x0, x1, x0 - 6, t);
   }
-  svg += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" "
-                     "stroke=\"black\"/>\n",
-                     x0, y1, x1 - x0, y0 - y1);
-  svg += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n",
-                     0.5 * (x0 + x1), kHeight - 18, escape(x_label));
-  svg += fmt::format("<text x=\"18\" y=\"{0}\" text-anchor=\"middle\" "
-                     "transform=\"rotate(-90 18 {0})\">{1}</text>\n",
-                     0.5 * (y0 + y1), escape(y_label));
+  svg += fmt::format(
+      "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" "
+      "stroke=\"black\"/>\n",
+      x0, y1, x1 - x0, y0 - y1);
+  svg += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", 0.5 * (x0 + x1),
+                     kHeight - 18, escape(x_label));
+  svg += fmt::format(
+      "<text x=\"18\" y=\"{0}\" text-anchor=\"middle\" "
+      "transform=\"rotate(-90 18 {0})\">{1}</text>\n",
+      0.5 * (y0 + y1), escape(y_label));
   for (std::size_t i = 0; i < series.size(); ++i) {
     const PlotSeries& s = series[i];
     const char* color = kColors[i % kColors.size()];
@@ -108,13 +116,15 @@ std::string LinePlot::to_svg() const {
       if ((log_x && !(s.x[k] > 0)) || (log_y && !(s.y[k] > 0))) continue;
       points += fmt::format("{:.1f},{:.1f} ", ax.map(s.x[k], x0, x1), ay.map(s.y[k], y0, y1));
     }
-    svg += fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"1.6\" "
-                       "points=\"{}\"/>\n",
-                       color, points);
+    svg += fmt::format(
+        "<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"1.6\" "
+        "points=\"{}\"/>\n",
+        color, points);
     const double ly = kTop + 14 + 18 * static_cast<double>(i);
-    svg += fmt::format("<line x1=\"{0}\" y1=\"{1}\" x2=\"{2}\" y2=\"{1}\" stroke=\"{3}\" "
-                       "stroke-width=\"3\"/><text x=\"{4}\" y=\"{1}\" dy=\"4\">{5}</text>\n",
-                       x1 + 12, ly, x1 + 32, color, x1 + 38, escape(s.name));
+    svg += fmt::format(
+        "<line x1=\"{0}\" y1=\"{1}\" x2=\"{2}\" y2=\"{1}\" stroke=\"{3}\" "
+        "stroke-width=\"3\"/><text x=\"{4}\" y=\"{1}\" dy=\"4\">{5}</text>\n",
+        x1 + 12, ly, x1 + 32, color, x1 + 38, escape(s.name));
   }
   return svg + "</svg>\n";
 }

@@ -26,9 +26,7 @@ struct Aabb {
     max = max.max(b.max);
   }
   /// Closed-box overlap: boxes that touch overlap (touching can be a contact).
-  bool overlaps(const Aabb& b) const {
-    return (min <= b.max).all() && (b.min <= max).all();
-  }
+  bool overlaps(const Aabb& b) const { return (min <= b.max).all() && (b.min <= max).all(); }
   Vec3 center() const { return (0.5 * (min + max)).matrix(); }
   Vec3 diagonal() const { return (max - min).matrix(); }
 };

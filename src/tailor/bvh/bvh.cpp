@@ -45,8 +45,7 @@ Bvh::Bvh(std::span<const Aabb> primitive_boxes) {
     const Index half = task.count / 2;
     // Ties broken by id so the tree depends only on the input.
     std::nth_element(begin, begin + half, begin + task.count, [&](Index a, Index b) {
-      return centers[a][axis] < centers[b][axis] ||
-             (centers[a][axis] == centers[b][axis] && a < b);
+      return centers[a][axis] < centers[b][axis] || (centers[a][axis] == centers[b][axis] && a < b);
     });
     // Pre-order numbering: the left subtree (2*half-1 nodes) follows its parent, the
     // right subtree follows the whole left subtree.

@@ -33,8 +33,8 @@ void MeshBvh::refit(const Positions& x0, const Positions& x1, bool with_cones) {
   m_tree.for_each_node_bottom_up([&](Index node) {
     if (m_tree.is_leaf(node)) {
       const auto v = faces.row(m_faces[m_tree.primitive(node)]);
-      m_cones[node] = continuous_normal_cone(x0.row(v[0]), x0.row(v[1]), x0.row(v[2]),
-                                             x1.row(v[0]), x1.row(v[1]), x1.row(v[2]));
+      m_cones[node] = continuous_normal_cone(x0.row(v[0]), x0.row(v[1]), x0.row(v[2]), x1.row(v[0]),
+                                             x1.row(v[1]), x1.row(v[2]));
     } else {
       m_cones[node] = m_cones[m_tree.left(node)].merged(m_cones[m_tree.right(node)]);
     }

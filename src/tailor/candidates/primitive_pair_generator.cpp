@@ -166,14 +166,13 @@ void PrimitivePairGenerator::generate(std::span<const TrianglePair> ctps,
                                                   isolated.vertex_face[i].face, out);
                       }
                     });
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, isolated.edge_edge.size(), 1024),
-                    [&](const auto& r) {
-                      ThreadOutput& out = outputs.local();
-                      for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                        context.offer_edge_edge(isolated.edge_edge[i].edge_a,
-                                                isolated.edge_edge[i].edge_b, out);
-                      }
-                    });
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, isolated.edge_edge.size(), 1024), [&](const auto& r) {
+        ThreadOutput& out = outputs.local();
+        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+          context.offer_edge_edge(isolated.edge_edge[i].edge_a, isolated.edge_edge[i].edge_b, out);
+        }
+      });
   for (ThreadOutput& out : outputs) {
     vertex_face.insert(vertex_face.end(), out.vertex_face.begin(), out.vertex_face.end());
     edge_edge.insert(edge_edge.end(), out.edge_edge.begin(), out.edge_edge.end());

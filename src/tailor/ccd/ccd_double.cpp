@@ -38,14 +38,15 @@ bool in_range(std::initializer_list<const Vec3*> points) {
   return true;
 }
 
-Interval half(const Interval& x) { return {next_down(x.lo * 0.5), next_up(x.hi * 0.5)}; }
+Interval half(const Interval& x) {
+  return {next_down(x.lo * 0.5), next_up(x.hi * 0.5)};
+}
 
 /// Rigorous Bernstein coefficients of f on [0, 1] from the certified filter values;
 /// `identically_zero` is set when every term of every coefficient is exactly zero.
 std::optional<Bern> coplanarity_bernstein(const Vec3& a0, const Vec3& b0, const Vec3& c0,
                                           const Vec3& d0, const Vec3& a1, const Vec3& b1,
-                                          const Vec3& c1, const Vec3& d1,
-                                          bool& identically_zero) {
+                                          const Vec3& c1, const Vec3& d1, bool& identically_zero) {
   double value[4], bound[4];
   if (!coplanarity_bernstein_double(a0, b0, c0, d0, a1, b1, c1, d1, value, bound)) {
     return std::nullopt;
@@ -95,8 +96,8 @@ IV moving_point(const Vec3& x0, const Vec3& x1, double t1, double t2) {
 
 bool point_segment_empty(const IV& p, const IV& a, const IV& b) {
   const PointSegment<Interval> s = point_segment(p, a, b);
-  return s.cross.x.nonzero() || s.cross.y.nonzero() || s.cross.z.nonzero() ||
-         s.along.negative() || s.within.negative();
+  return s.cross.x.nonzero() || s.cross.y.nonzero() || s.cross.z.nonzero() || s.along.negative() ||
+         s.within.negative();
 }
 
 struct Node {
@@ -179,14 +180,13 @@ std::optional<CcdResult> vertex_face_ccd_double(const VertexFaceQuery& q) {
     return std::nullopt;
   }
   bool f_zero = false;
-  const auto f = coplanarity_bernstein(q.a_t0, q.b_t0, q.c_t0, q.p_t0, q.a_t1, q.b_t1, q.c_t1,
-                                       q.p_t1, f_zero);
+  const auto f =
+      coplanarity_bernstein(q.a_t0, q.b_t0, q.c_t0, q.p_t0, q.a_t1, q.b_t1, q.c_t1, q.p_t1, f_zero);
   if (!f) return std::nullopt;
   auto points = [&](double t1, double t2) {
-    return std::array<IV, 4>{moving_point(q.p_t0, q.p_t1, t1, t2),
-                             moving_point(q.a_t0, q.a_t1, t1, t2),
-                             moving_point(q.b_t0, q.b_t1, t1, t2),
-                             moving_point(q.c_t0, q.c_t1, t1, t2)};
+    return std::array<IV, 4>{
+        moving_point(q.p_t0, q.p_t1, t1, t2), moving_point(q.a_t0, q.a_t1, t1, t2),
+        moving_point(q.b_t0, q.b_t1, t1, t2), moving_point(q.c_t0, q.c_t1, t1, t2)};
   };
   // p certainly inside the open, non-degenerate triangle.
   auto strictly_inside = [](const FaceConditions<Interval>& fc) {
@@ -203,8 +203,8 @@ std::optional<CcdResult> vertex_face_ccd_double(const VertexFaceQuery& q) {
     // A root of f inside the open triangle: p is on no edge line (each E > 0), so the only
     // contacts on this node are roots of f.
     if (f_changes_sign && strictly_inside(fc)) return NodeState::root_hit;
-    const bool face_empty = !(fc.N.hi > 0.0) || fc.E_ab.negative() || fc.E_bc.negative() ||
-                            fc.E_ca.negative();
+    const bool face_empty =
+        !(fc.N.hi > 0.0) || fc.E_ab.negative() || fc.E_bc.negative() || fc.E_ca.negative();
     if (face_empty && point_segment_empty(p, a, b) && point_segment_empty(p, b, c) &&
         point_segment_empty(p, c, a)) {
       return NodeState::empty;
@@ -223,14 +223,13 @@ std::optional<CcdResult> edge_edge_ccd_double(const EdgeEdgeQuery& q) {
     return std::nullopt;
   }
   bool f_zero = false;
-  const auto f = coplanarity_bernstein(q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1,
-                                       q.ea1_t1, q.eb0_t1, q.eb1_t1, f_zero);
+  const auto f = coplanarity_bernstein(q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1, q.ea1_t1,
+                                       q.eb0_t1, q.eb1_t1, f_zero);
   if (!f) return std::nullopt;
   auto points = [&](double t1, double t2) {
-    return std::array<IV, 4>{moving_point(q.ea0_t0, q.ea0_t1, t1, t2),
-                             moving_point(q.ea1_t0, q.ea1_t1, t1, t2),
-                             moving_point(q.eb0_t0, q.eb0_t1, t1, t2),
-                             moving_point(q.eb1_t0, q.eb1_t1, t1, t2)};
+    return std::array<IV, 4>{
+        moving_point(q.ea0_t0, q.ea0_t1, t1, t2), moving_point(q.ea1_t0, q.ea1_t1, t1, t2),
+        moving_point(q.eb0_t0, q.eb0_t1, t1, t2), moving_point(q.eb1_t0, q.eb1_t1, t1, t2)};
   };
   // The lines certainly cross at interior points of both segments (0 < s, u < 1).
   auto strictly_crossing = [](const EdgeConditions<Interval>& ec) {

@@ -86,7 +86,9 @@ CcdResult to_result(const std::optional<mpq_class>& toi) {
   return r;
 }
 
-bool holds(int sign, bool strict) { return strict ? sign > 0 : sign >= 0; }
+bool holds(int sign, bool strict) {
+  return strict ? sign > 0 : sign >= 0;
+}
 
 /// Point p on closed segment ab at root r of squarefree fs (f != 0).
 bool point_on_segment_at(const ExactPoly& fs, RealRoot& r, const PointSegment<ExactPoly>& s) {
@@ -138,9 +140,8 @@ CcdResult vertex_face_ccd_exact(const VertexFaceQuery& q) {
       {fc.N, true}, {fc.E_ab, false}, {fc.E_bc, false}, {fc.E_ca, false}};
   if (!f.is_zero()) {
     const PV* ends[3][2] = {{&a, &b}, {&b, &c}, {&c, &a}};
-    return to_result(first_root_contact(f, main, 3, [&](int i) {
-      return point_segment(p, *ends[i][0], *ends[i][1]);
-    }));
+    return to_result(first_root_contact(
+        f, main, 3, [&](int i) { return point_segment(p, *ends[i][0], *ends[i][1]); }));
   }
   std::optional<mpq_class> best = earliest_solution(f, main, tolerance());
   keep_min(best, point_on_segment(p, a, b));
@@ -150,20 +151,17 @@ CcdResult vertex_face_ccd_exact(const VertexFaceQuery& q) {
 }
 
 CcdResult edge_edge_ccd_exact(const EdgeEdgeQuery& q) {
-  check_finite({&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0, &q.ea0_t1, &q.ea1_t1, &q.eb0_t1,
-                &q.eb1_t1});
-  const long s = integer_scale({&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0, &q.ea0_t1,
-                                &q.ea1_t1, &q.eb0_t1, &q.eb1_t1});
+  check_finite(
+      {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0, &q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1});
+  const long s = integer_scale(
+      {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0, &q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1});
   const PV a = moving_point(q.ea0_t0, q.ea0_t1, s), b = moving_point(q.ea1_t0, q.ea1_t1, s),
            c = moving_point(q.eb0_t0, q.eb0_t1, s), d = moving_point(q.eb1_t0, q.eb1_t1, s);
   const ExactPoly f = coplanarity(a, b, c, d);
   if (!f.is_zero() && f.degree() == 0) return to_result({});
   const EdgeConditions<ExactPoly> ec = edge_conditions(a, b, c, d);
-  const std::vector<SignCondition> main{{ec.M, true},
-                                        {ec.S_, false},
-                                        {ec.M_minus_S, false},
-                                        {ec.U, false},
-                                        {ec.M_minus_U, false}};
+  const std::vector<SignCondition> main{
+      {ec.M, true}, {ec.S_, false}, {ec.M_minus_S, false}, {ec.U, false}, {ec.M_minus_U, false}};
   if (!f.is_zero()) {
     // Endpoint on the other segment: a and b on cd, c and d on ab.
     const PV* cases[4][3] = {{&a, &c, &d}, {&b, &c, &d}, {&c, &a, &b}, {&d, &a, &b}};

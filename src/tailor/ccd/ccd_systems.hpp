@@ -56,8 +56,7 @@ struct FaceConditions {
 };
 
 template <class S>
-FaceConditions<S> face_conditions(const V3<S>& p, const V3<S>& a, const V3<S>& b,
-                                  const V3<S>& c) {
+FaceConditions<S> face_conditions(const V3<S>& p, const V3<S>& a, const V3<S>& b, const V3<S>& c) {
   const V3<S> ab = b - a, ac = c - a;
   const V3<S> n = cross(ab, ac);
   return {dot(n, n), dot(cross(ab, p - a), n), dot(cross(c - b, p - b), n),
@@ -84,8 +83,7 @@ struct EdgeConditions {
 };
 
 template <class S>
-EdgeConditions<S> edge_conditions(const V3<S>& a, const V3<S>& b, const V3<S>& c,
-                                  const V3<S>& d) {
+EdgeConditions<S> edge_conditions(const V3<S>& a, const V3<S>& b, const V3<S>& c, const V3<S>& d) {
   const V3<S> ba = b - a, dc = d - c, ca = c - a;
   const V3<S> m = cross(ba, dc);
   return {dot(m, m), dot(cross(ca, dc), m), dot(cross(b - c, dc), m), dot(cross(ca, ba), m),

@@ -34,10 +34,18 @@ int coplanarity_coefficient_sign_exact(int index, const Vec3& a_t0, const Vec3& 
   const Q3 u1 = difference(b_t1, a_t1), v1 = difference(c_t1, a_t1), w1 = difference(d_t1, a_t1);
   mpq_class value;
   switch (index) {
-    case 0: value = det(u0, v0, w0); break;
-    case 1: value = det(u1, v0, w0) + det(u0, v1, w0) + det(u0, v0, w1); break;
-    case 2: value = det(u0, v1, w1) + det(u1, v0, w1) + det(u1, v1, w0); break;
-    default: value = det(u1, v1, w1); break;
+    case 0:
+      value = det(u0, v0, w0);
+      break;
+    case 1:
+      value = det(u1, v0, w0) + det(u0, v1, w0) + det(u0, v0, w1);
+      break;
+    case 2:
+      value = det(u0, v1, w1) + det(u1, v0, w1) + det(u1, v1, w0);
+      break;
+    default:
+      value = det(u1, v1, w1);
+      break;
   }
   const int s = sgn(value);
   return (s > 0) - (s < 0);

@@ -24,9 +24,9 @@ namespace tailor {
 /// Sign of the coplanarity function f(t) = n(t)·(d(t) - a(t)) over the whole step,
 /// n(t) = (b(t)-a(t)) × (c(t)-a(t)), established from its Bernstein coefficients.
 enum class StepSign : signed char {
-  negative = -1,   ///< f < 0 for every t in [0, 1]
-  mixed = 0,       ///< the coefficients do not all share one strict sign: f may vanish
-  positive = 1,    ///< f > 0 for every t in [0, 1]
+  negative = -1,  ///< f < 0 for every t in [0, 1]
+  mixed = 0,      ///< the coefficients do not all share one strict sign: f may vanish
+  positive = 1,   ///< f > 0 for every t in [0, 1]
 };
 
 namespace detail {
@@ -78,7 +78,9 @@ inline bool coplanarity_bernstein_double(const Vec3& a_t0, const Vec3& b_t0, con
     r[1] = std::fabs(p[2] * q[0]) + std::fabs(p[0] * q[2]);
     r[2] = std::fabs(p[0] * q[1]) + std::fabs(p[1] * q[0]);
   };
-  auto dot = [](const double* p, const double* q) { return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]; };
+  auto dot = [](const double* p, const double* q) {
+    return p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
+  };
   auto dot_abs = [](const double* p, const double* q) {
     return std::fabs(p[0]) * q[0] + std::fabs(p[1]) * q[1] + std::fabs(p[2]) * q[2];
   };
@@ -108,12 +110,12 @@ inline bool coplanarity_bernstein_double(const Vec3& a_t0, const Vec3& b_t0, con
 
 /// Certified signs of the four Bernstein coefficients of f in double: each entry is -1,
 /// 0 (exactly zero) or 1 when certain, 2 when the error bound cannot decide.
-inline std::array<int, 4> coplanarity_coefficient_signs_double(
-    const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0, const Vec3& d_t0, const Vec3& a_t1,
-    const Vec3& b_t1, const Vec3& c_t1, const Vec3& d_t1) {
+inline std::array<int, 4> coplanarity_coefficient_signs_double(const Vec3& a_t0, const Vec3& b_t0,
+                                                               const Vec3& c_t0, const Vec3& d_t0,
+                                                               const Vec3& a_t1, const Vec3& b_t1,
+                                                               const Vec3& c_t1, const Vec3& d_t1) {
   double value[4], bound[4];
-  if (!coplanarity_bernstein_double(a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1, d_t1, value,
-                                    bound)) {
+  if (!coplanarity_bernstein_double(a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1, d_t1, value, bound)) {
     return {2, 2, 2, 2};
   }
   std::array<int, 4> sign{};
@@ -139,8 +141,8 @@ inline std::array<int, 4> coplanarity_coefficient_signs_double(
 inline StepSign coplanarity_sign(const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0,
                                  const Vec3& d_t0, const Vec3& a_t1, const Vec3& b_t1,
                                  const Vec3& c_t1, const Vec3& d_t1) {
-  std::array<int, 4> s = detail::coplanarity_coefficient_signs_double(a_t0, b_t0, c_t0, d_t0,
-                                                                      a_t1, b_t1, c_t1, d_t1);
+  std::array<int, 4> s =
+      detail::coplanarity_coefficient_signs_double(a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1, d_t1);
   // Two certain opposite signs, or a certain zero, decide "mixed" without exact work.
   bool has_pos = false, has_neg = false, has_zero = false, has_unknown = false;
   for (int x : s) {
@@ -153,8 +155,8 @@ inline StepSign coplanarity_sign(const Vec3& a_t0, const Vec3& b_t0, const Vec3&
   if (has_unknown) {
     for (int i = 0; i < 4; ++i) {
       if (s[i] != 2) continue;
-      s[i] = detail::coplanarity_coefficient_sign_exact(i, a_t0, b_t0, c_t0, d_t0, a_t1, b_t1,
-                                                        c_t1, d_t1);
+      s[i] = detail::coplanarity_coefficient_sign_exact(i, a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1,
+                                                        d_t1);
       if (s[i] == 0) return StepSign::mixed;
       has_pos |= s[i] == 1;
       has_neg |= s[i] == -1;

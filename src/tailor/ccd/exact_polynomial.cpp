@@ -15,7 +15,9 @@ int sign_of(const mpq_class& x) {
 
 }  // namespace
 
-ExactPoly::ExactPoly(const mpq_class& c) : m_c{c} { trim(); }
+ExactPoly::ExactPoly(const mpq_class& c) : m_c{c} {
+  trim();
+}
 
 ExactPoly::ExactPoly(std::vector<mpq_class> coefficients) : m_c(std::move(coefficients)) {
   trim();
@@ -35,7 +37,9 @@ mpq_class ExactPoly::operator()(const mpq_class& t) const {
   return r;
 }
 
-int ExactPoly::sign_at(const mpq_class& t) const { return sign_of((*this)(t)); }
+int ExactPoly::sign_at(const mpq_class& t) const {
+  return sign_of((*this)(t));
+}
 
 ExactPoly ExactPoly::derivative() const {
   std::vector<mpq_class> d;
@@ -283,7 +287,9 @@ int sign_at_root(const ExactPoly& p, RealRoot& root, const ExactPoly& q) {
 
 namespace {
 
-bool holds(int sign, bool strict) { return strict ? sign > 0 : sign >= 0; }
+bool holds(int sign, bool strict) {
+  return strict ? sign > 0 : sign >= 0;
+}
 
 }  // namespace
 

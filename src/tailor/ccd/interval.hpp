@@ -21,7 +21,9 @@ inline double next_up(double x) {
 }
 
 /// Next double below `x` (x itself for NaN and -inf).
-inline double next_down(double x) { return -next_up(-x); }
+inline double next_down(double x) {
+  return -next_up(-x);
+}
 
 /// A closed interval [lo, hi] of reals.
 struct Interval {

@@ -41,7 +41,8 @@ bool is_integer(const std::string& s) {
 /// num/den as a double, which must be exact.
 double exact_ratio(const std::string& num, const std::string& den, const std::string& path,
                    std::size_t line) {
-  if (!is_integer(num) || !is_integer(den)) fail(path, line, "expected integers, got '" + num + "', '" + den + "'");
+  if (!is_integer(num) || !is_integer(den))
+    fail(path, line, "expected integers, got '" + num + "', '" + den + "'");
   const mpz_class n(num[0] == '+' ? num.substr(1) : num, 10);
   const mpz_class d(den[0] == '+' ? den.substr(1) : den, 10);
   if (d == 0) fail(path, line, "zero denominator");
@@ -112,8 +113,8 @@ CcdQueryFile read_ccd_queries(const std::string& path, std::optional<CcdQueryKin
     }
   }
   if (rows.size() % 8 != 0) {
-    fail(path, line, "the number of rows (" + std::to_string(rows.size()) +
-                         ") is not a multiple of 8");
+    fail(path, line,
+         "the number of rows (" + std::to_string(rows.size()) + ") is not a multiple of 8");
   }
   const std::size_t count = rows.size() / 8;
   for (std::size_t i = 0; i < count; ++i) {

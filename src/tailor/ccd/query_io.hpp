@@ -27,7 +27,7 @@ enum class CcdQueryKind { vertex_face, edge_edge };
 
 /// The queries of one file.
 struct CcdQueryFile {
-  std::string path;                         ///< where they were read from
+  std::string path;  ///< where they were read from
   CcdQueryKind kind = CcdQueryKind::vertex_face;
   std::vector<VertexFaceQuery> vertex_face;  ///< filled when kind == vertex_face
   std::vector<EdgeEdgeQuery> edge_edge;      ///< filled when kind == edge_edge

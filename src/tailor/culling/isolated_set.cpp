@@ -70,7 +70,8 @@ IsolatedSet IsolatedSet::build(const TriangleMesh& mesh) {
   IsolatedSet set;
   // An orphan face g shares a vertex with every face around v, so it is near them.
   set.vertex_face = collect_in_order<VertexFacePair>(
-      mesh.num_vertices(), [&](Index v, std::vector<VertexFacePair>& out, std::vector<Index>& near) {
+      mesh.num_vertices(),
+      [&](Index v, std::vector<VertexFacePair>& out, std::vector<Index>& near) {
         const auto around = mesh.vertex_faces(v);
         if (around.empty()) return;  // unreferenced vertices are not part of the surface
         faces_near(mesh, around, near);

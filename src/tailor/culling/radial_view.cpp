@@ -54,8 +54,10 @@ bool cluster_loops(const TriangleMesh& mesh, const std::vector<Index>& faces,
     for (Index f : around) {
       auto it = face_slot.find(f);
       if (it == face_slot.end()) continue;
-      if (first < 0) first = it->second;
-      else parent[find(it->second)] = find(first);
+      if (first < 0)
+        first = it->second;
+      else
+        parent[find(it->second)] = find(first);
     }
   }
   for (std::size_t i = 0; i < faces.size(); ++i) {
@@ -119,8 +121,8 @@ RadialViewClusters::RadialViewClusters(const TriangleMesh& mesh, const Positions
   m_certifiable.assign(observers.size(), 0);
   m_ghost_loops.resize(observers.size());
   for (std::size_t c = 0; c < observers.size(); ++c) {
-    m_certifiable[c] = !m_cluster_faces[c].empty() &&
-                       cluster_loops(mesh, m_cluster_faces[c], m_ghost_loops[c]);
+    m_certifiable[c] =
+        !m_cluster_faces[c].empty() && cluster_loops(mesh, m_cluster_faces[c], m_ghost_loops[c]);
   }
 }
 
@@ -138,15 +140,20 @@ std::vector<char> RadialViewClusters::certify(const Positions& x0, const Positio
     auto classify = [&](const Vec3& a0, const Vec3& b0, const Vec3& c0, const Vec3& a1,
                         const Vec3& b1, const Vec3& c1) {
       switch (coplanarity_sign(a0, b0, c0, o0, a1, b1, c1, o1)) {
-        case StepSign::positive: ++positive; break;
-        case StepSign::negative: ++negative; break;
-        case StepSign::mixed: ++undetermined; break;
+        case StepSign::positive:
+          ++positive;
+          break;
+        case StepSign::negative:
+          ++negative;
+          break;
+        case StepSign::mixed:
+          ++undetermined;
+          break;
       }
     };
     for (Index f : m_cluster_faces[c]) {
       const auto v = m_mesh->faces().row(f);
-      classify(x0.row(v[0]), x0.row(v[1]), x0.row(v[2]), x1.row(v[0]), x1.row(v[1]),
-               x1.row(v[2]));
+      classify(x0.row(v[0]), x0.row(v[1]), x0.row(v[2]), x1.row(v[0]), x1.row(v[1]), x1.row(v[2]));
     }
     for (const auto& loop : m_ghost_loops[c]) {
       const Vec3 center0 = centroid(x0, loop), center1 = centroid(x1, loop);

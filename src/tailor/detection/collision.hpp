@@ -24,7 +24,7 @@ struct VertexFaceCollision {
 struct EdgeEdgeCollision {
   Index a0 = -1, a1 = -1, b0 = -1, b1 = -1;
   Index edge_a = -1, edge_b = -1;  ///< edge ids in TriangleMesh::edges()
-  double toi = 1.0;  ///< never later than the earliest contact
+  double toi = 1.0;                ///< never later than the earliest contact
   friend bool operator<(const EdgeEdgeCollision& x, const EdgeEdgeCollision& y) {
     return std::tie(x.a0, x.a1, x.b0, x.b1) < std::tie(y.a0, y.a1, y.b0, y.b1);
   }

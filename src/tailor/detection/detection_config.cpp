@@ -22,8 +22,8 @@ DetectionConfig DetectionConfig::preset(std::string_view name) {
   config.primitive_boxes = true;
   config.radial_view = true;
   if (name == "paper") return config;
-  throw InputError(fmt::format("unknown method '{}' (expected one of: basic, curtis, tang, paper)",
-                               name));
+  throw InputError(
+      fmt::format("unknown method '{}' (expected one of: basic, curtis, tang, paper)", name));
 }
 
 std::vector<std::string> DetectionConfig::preset_names() {

@@ -10,9 +10,10 @@ namespace tailor {
 
 /// Switches for every culling stage. Every combination reports the same collisions.
 struct DetectionConfig {
-  bool normal_cones = true;        ///< skip nodes certified by continuous normal cones
-  bool contour_test = true;        ///< require the contour test for cone culling (never off by default)
-  bool adjacency_culling = true;   ///< never emit triangle pairs sharing a vertex; use the isolated set
+  bool normal_cones = true;  ///< skip nodes certified by continuous normal cones
+  bool contour_test = true;  ///< require the contour test for cone culling (never off by default)
+  bool adjacency_culling =
+      true;  ///< never emit triangle pairs sharing a vertex; use the isolated set
   bool feature_assignment = true;  ///< representative triangles (Curtis et al. 2008)
   bool primitive_boxes = true;     ///< swept boxes of vertex/edge/face pairs
   bool coplanarity_filter = true;  ///< non-coplanarity (DNF) filter

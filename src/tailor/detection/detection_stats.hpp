@@ -10,24 +10,24 @@ namespace tailor {
 /// Per-stage statistics of one detection step (counts are exact, times in milliseconds).
 struct DetectionStats {
   // High level.
-  std::int64_t node_pairs_visited = 0;    ///< BVH node pairs whose boxes were tested
-  std::int64_t nodes_culled_by_cones = 0; ///< nodes whose self-test the normal cone skipped
-  std::int64_t contour_tests = 0;         ///< contour tests run (cone was under 90°)
-  std::int64_t contour_tests_failed = 0;  ///< contour tests that could not certify
-  std::int64_t clusters_certified = 0;    ///< radial-view clusters skipped whole
-  std::int64_t radial_positive = 0;       ///< radial view: triangles (real + ghost) facing
-  std::int64_t radial_negative = 0;       ///<   their observer, facing away, or neither
-  std::int64_t radial_undetermined = 0;   ///<   over the whole step
+  std::int64_t node_pairs_visited = 0;        ///< BVH node pairs whose boxes were tested
+  std::int64_t nodes_culled_by_cones = 0;     ///< nodes whose self-test the normal cone skipped
+  std::int64_t contour_tests = 0;             ///< contour tests run (cone was under 90°)
+  std::int64_t contour_tests_failed = 0;      ///< contour tests that could not certify
+  std::int64_t clusters_certified = 0;        ///< radial-view clusters skipped whole
+  std::int64_t radial_positive = 0;           ///< radial view: triangles (real + ghost) facing
+  std::int64_t radial_negative = 0;           ///<   their observer, facing away, or neither
+  std::int64_t radial_undetermined = 0;       ///<   over the whole step
   std::int64_t candidate_triangle_pairs = 0;  ///< CTPs emitted
-  std::int64_t isolated_vf_pairs = 0;     ///< VF pairs of the isolated set
-  std::int64_t isolated_ee_pairs = 0;     ///< EE pairs of the isolated set
+  std::int64_t isolated_vf_pairs = 0;         ///< VF pairs of the isolated set
+  std::int64_t isolated_ee_pairs = 0;         ///< EE pairs of the isolated set
   // Low level: VF / EE pairs after each stage.
-  std::int64_t vf_generated = 0, ee_generated = 0;          ///< from CTPs + isolated set
-  std::int64_t vf_after_boxes = 0, ee_after_boxes = 0;      ///< survived primitive boxes
-  std::int64_t vf_after_filter = 0, ee_after_filter = 0;    ///< survived the DNF filter
-  std::int64_t vf_tested = 0, ee_tested = 0;                ///< sent to the exact CCD
-  std::int64_t vf_colliding = 0, ee_colliding = 0;          ///< collisions found
-  std::int64_t ccd_exact_fallbacks = 0;                     ///< queries the exact path decided
+  std::int64_t vf_generated = 0, ee_generated = 0;        ///< from CTPs + isolated set
+  std::int64_t vf_after_boxes = 0, ee_after_boxes = 0;    ///< survived primitive boxes
+  std::int64_t vf_after_filter = 0, ee_after_filter = 0;  ///< survived the DNF filter
+  std::int64_t vf_tested = 0, ee_tested = 0;              ///< sent to the exact CCD
+  std::int64_t vf_colliding = 0, ee_colliding = 0;        ///< collisions found
+  std::int64_t ccd_exact_fallbacks = 0;                   ///< queries the exact path decided
   // Times (ms).
   double refit_ms = 0, traversal_ms = 0, pair_generation_ms = 0, ccd_ms = 0, total_ms = 0;
 

@@ -33,43 +33,40 @@ void sort_unique(std::vector<T>& items) {
 
 }  // namespace
 
-CollisionSet test_pairs_exactly(const TriangleMesh& mesh, const Positions& x0,
-                                const Positions& x1, std::span<const VertexFacePair> vertex_face,
+CollisionSet test_pairs_exactly(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
+                                std::span<const VertexFacePair> vertex_face,
                                 std::span<const EdgeEdgePair> edge_edge,
                                 std::int64_t* exact_fallbacks) {
   const FaceArray& faces = mesh.faces();
   const EdgeArray& edges = mesh.edges();
   tbb::enumerable_thread_specific<ThreadOutput> outputs;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertex_face.size(), 256),
-                    [&](const auto& range) {
-                      ThreadOutput& out = outputs.local();
-                      for (std::size_t i = range.begin(); i < range.end(); ++i) {
-                        const auto [v, f] = vertex_face[i];
-                        const Index a = faces(f, 0), b = faces(f, 1), c = faces(f, 2);
-                        const CcdResult result = vertex_face_ccd(
-                            {x0.row(v), x0.row(a), x0.row(b), x0.row(c), x1.row(v), x1.row(a),
-                             x1.row(b), x1.row(c)});
-                        out.exact += result.path == CcdPath::exact;
-                        if (result.hit) out.collisions.vertex_face.push_back({v, f, result.toi});
-                      }
-                    });
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, edge_edge.size(), 256),
-                    [&](const auto& range) {
-                      ThreadOutput& out = outputs.local();
-                      for (std::size_t i = range.begin(); i < range.end(); ++i) {
-                        const auto [e1, e2] = edge_edge[i];
-                        const Index a = edges(e1, 0), b = edges(e1, 1);
-                        const Index c = edges(e2, 0), d = edges(e2, 1);
-                        const CcdResult result = edge_edge_ccd(
-                            {x0.row(a), x0.row(b), x0.row(c), x0.row(d), x1.row(a), x1.row(b),
-                             x1.row(c), x1.row(d)});
-                        out.exact += result.path == CcdPath::exact;
-                        if (result.hit) {
-                          out.collisions.edge_edge.push_back(
-                              make_edge_edge(edges, e1, e2, result.toi));
-                        }
-                      }
-                    });
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, vertex_face.size(), 256), [&](const auto& range) {
+        ThreadOutput& out = outputs.local();
+        for (std::size_t i = range.begin(); i < range.end(); ++i) {
+          const auto [v, f] = vertex_face[i];
+          const Index a = faces(f, 0), b = faces(f, 1), c = faces(f, 2);
+          const CcdResult result = vertex_face_ccd({x0.row(v), x0.row(a), x0.row(b), x0.row(c),
+                                                    x1.row(v), x1.row(a), x1.row(b), x1.row(c)});
+          out.exact += result.path == CcdPath::exact;
+          if (result.hit) out.collisions.vertex_face.push_back({v, f, result.toi});
+        }
+      });
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, edge_edge.size(), 256), [&](const auto& range) {
+        ThreadOutput& out = outputs.local();
+        for (std::size_t i = range.begin(); i < range.end(); ++i) {
+          const auto [e1, e2] = edge_edge[i];
+          const Index a = edges(e1, 0), b = edges(e1, 1);
+          const Index c = edges(e2, 0), d = edges(e2, 1);
+          const CcdResult result = edge_edge_ccd({x0.row(a), x0.row(b), x0.row(c), x0.row(d),
+                                                  x1.row(a), x1.row(b), x1.row(c), x1.row(d)});
+          out.exact += result.path == CcdPath::exact;
+          if (result.hit) {
+            out.collisions.edge_edge.push_back(make_edge_edge(edges, e1, e2, result.toi));
+          }
+        }
+      });
   CollisionSet all;
   std::int64_t exact = 0;
   for (ThreadOutput& out : outputs) {

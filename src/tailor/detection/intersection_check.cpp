@@ -69,8 +69,8 @@ IntersectionReport check_intersections(const TriangleMesh& cloth, const Position
   report.self_candidate_pairs = static_cast<std::int64_t>(pairs.size());
   std::vector<TrianglePairVerdict> verdicts(pairs.size());
   tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t i) {
-    verdicts[i] = classify_face_pair(x, face_of(cloth, pairs[i].first),
-                                     face_of(cloth, pairs[i].second));
+    verdicts[i] =
+        classify_face_pair(x, face_of(cloth, pairs[i].first), face_of(cloth, pairs[i].second));
   });
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const auto [f, g] = pairs[i];
@@ -94,10 +94,9 @@ IntersectionReport check_intersections(const TriangleMesh& cloth, const Position
     }
     const Bvh obstacle_bvh(face_boxes(*obstacle, *y));
     std::vector<std::pair<Index, Index>> cross;
-    bvh.for_each_overlapping_pair(obstacle_bvh,
-                                  [&](Index f, Index g) {
-                                    if (!exempt_face[f]) cross.emplace_back(f, g);
-                                  });
+    bvh.for_each_overlapping_pair(obstacle_bvh, [&](Index f, Index g) {
+      if (!exempt_face[f]) cross.emplace_back(f, g);
+    });
     std::sort(cross.begin(), cross.end());
     report.obstacle_candidate_pairs = static_cast<std::int64_t>(cross.size());
     std::vector<char> hit(cross.size(), 0);

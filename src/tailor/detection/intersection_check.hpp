@@ -49,8 +49,7 @@ struct IntersectionReport {
 /// InputError if a row count does not match its mesh or an exempt id is out of range.
 IntersectionReport check_intersections(const TriangleMesh& cloth, const Positions& x,
                                        const TriangleMesh* obstacle = nullptr,
-                                       const Positions* y = nullptr,
-                                       std::size_t max_pairs = 10,
+                                       const Positions* y = nullptr, std::size_t max_pairs = 10,
                                        std::span<const Index> obstacle_exempt_vertices = {});
 
 }  // namespace tailor

@@ -25,8 +25,8 @@ double elapsed_ms(Clock::time_point since) {
 
 void check_positions(const TriangleMesh& mesh, const Positions& x, const char* name) {
   if (x.rows() != mesh.num_vertices()) {
-    throw InputError(fmt::format("{} has {} vertices, the mesh has {}", name, x.rows(),
-                                 mesh.num_vertices()));
+    throw InputError(
+        fmt::format("{} has {} vertices, the mesh has {}", name, x.rows(), mesh.num_vertices()));
   }
   if (!x.allFinite()) throw InputError(fmt::format("{} has a non-finite coordinate", name));
 }
@@ -152,7 +152,11 @@ SelfCollisionDetector& SelfCollisionDetector::operator=(SelfCollisionDetector&&)
 DetectionResult SelfCollisionDetector::detect(const Positions& x0, const Positions& x1) {
   return m_impl->detect(x0, x1);
 }
-const DetectionConfig& SelfCollisionDetector::config() const { return m_impl->config; }
-const TriangleMesh& SelfCollisionDetector::mesh() const { return m_impl->mesh; }
+const DetectionConfig& SelfCollisionDetector::config() const {
+  return m_impl->config;
+}
+const TriangleMesh& SelfCollisionDetector::mesh() const {
+  return m_impl->mesh;
+}
 
 }  // namespace tailor

@@ -53,8 +53,7 @@ std::optional<int> orient3d_filter(const Vec3& a, const Vec3& b, const Vec3& c, 
   const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
   const double cdxady = cdx * ady, adxcdy = adx * cdy;
   const double adxbdy = adx * bdy, bdxady = bdx * ady;
-  const double det =
-      adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+  const double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
   const double permanent = (std::abs(bdxcdy) + std::abs(cdxbdy)) * std::abs(adz) +
                            (std::abs(cdxady) + std::abs(adxcdy)) * std::abs(bdz) +
                            (std::abs(adxbdy) + std::abs(bdxady)) * std::abs(cdz);
@@ -79,13 +78,13 @@ std::optional<int> orient2d_filter(const Vec2& a, const Vec2& b, const Vec2& c) 
 }
 
 int orient3d_exact(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const auto v = to_scaled_integers<12>({a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), c.x(),
-                                         c.y(), c.z(), d.x(), d.y(), d.z()});
+  const auto v = to_scaled_integers<12>(
+      {a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), c.x(), c.y(), c.z(), d.x(), d.y(), d.z()});
   const mpz_class ux = v[3] - v[0], uy = v[4] - v[1], uz = v[5] - v[2];
   const mpz_class wx = v[6] - v[0], wy = v[7] - v[1], wz = v[8] - v[2];
   const mpz_class dx = v[9] - v[0], dy = v[10] - v[1], dz = v[11] - v[2];
-  const mpz_class det = (uy * wz - uz * wy) * dx + (uz * wx - ux * wz) * dy +
-                        (ux * wy - uy * wx) * dz;
+  const mpz_class det =
+      (uy * wz - uz * wy) * dx + (uz * wx - ux * wz) * dy + (ux * wy - uy * wx) * dz;
   return sgn(det);
 }
 

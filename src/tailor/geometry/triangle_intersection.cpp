@@ -10,9 +10,12 @@ namespace {
 /// Drops coordinate `axis` (an exact projection onto an axis plane).
 Vec2 drop(const Vec3& p, int axis) {
   switch (axis) {
-    case 0: return {p.y(), p.z()};
-    case 1: return {p.z(), p.x()};
-    default: return {p.x(), p.y()};
+    case 0:
+      return {p.y(), p.z()};
+    case 1:
+      return {p.z(), p.x()};
+    default:
+      return {p.x(), p.y()};
   }
 }
 
@@ -191,8 +194,8 @@ TrianglePairVerdict classify_face_pair(const Positions& x, const std::array<Inde
   };
   bool hit = false;
   if (shared == 1) {
-    const int i = static_cast<int>(std::find_if(in_g.begin(), in_g.end(),
-                                                [](int j) { return j >= 0; }) - in_g.begin());
+    const int i = static_cast<int>(
+        std::find_if(in_g.begin(), in_g.end(), [](int j) { return j >= 0; }) - in_g.begin());
     const auto rest = others_of_g({in_g[i]});
     const Triangle t{point(f[i]), point(f[(i + 1) % 3]), point(f[(i + 2) % 3])};
     const Triangle u{point(f[i]), point(rest[0]), point(rest[1])};

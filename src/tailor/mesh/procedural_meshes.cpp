@@ -93,10 +93,10 @@ Positions crumpling_cloth(const Positions& rest, double t) {
   for (Eigen::Index i = 0; i < rest.rows(); ++i) {
     const double u = rest(i, 0) - center.x(), v = rest(i, 1) - center.y();
     const double shrink = 1 - 0.35 * t;
-    const double fold = 0.12 * size * t *
-                        (std::sin(3 * k * u + 2 * t) * std::cos(2 * k * v - t) +
-                         0.6 * std::sin(5 * k * (u + v) + 3 * t) +
-                         0.4 * std::cos(7 * k * (u - 0.5 * v) - 2 * t));
+    const double fold =
+        0.12 * size * t *
+        (std::sin(3 * k * u + 2 * t) * std::cos(2 * k * v - t) +
+         0.6 * std::sin(5 * k * (u + v) + 3 * t) + 0.4 * std::cos(7 * k * (u - 0.5 * v) - 2 * t));
     x(i, 0) = center.x() + shrink * u + 0.05 * size * t * std::sin(4 * k * v);
     x(i, 1) = center.y() + shrink * v + 0.05 * size * t * std::sin(4 * k * u);
     x(i, 2) = fold;

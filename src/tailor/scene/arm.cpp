@@ -15,7 +15,9 @@
 namespace tailor {
 namespace {
 
-double sign_of(double v) { return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0); }
+double sign_of(double v) {
+  return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0);
+}
 
 double smoothstep(double t) {
   t = std::clamp(t, 0.0, 1.0);
@@ -73,9 +75,10 @@ Arm::Arm(const ArmParams& params) : m_params(params) {
   check_positive(params.wrist_radius, "wrist_radius");
   check_positive(params.elbow_blend, "elbow_blend");
   if (params.rings < 2 || params.segments < 3 || params.cap_rings < 1) {
-    throw InputError(fmt::format("arm: resolution too low (rings {} ≥ 2, segments {} ≥ 3, "
-                                 "cap_rings {} ≥ 1 needed)",
-                                 params.rings, params.segments, params.cap_rings));
+    throw InputError(
+        fmt::format("arm: resolution too low (rings {} ≥ 2, segments {} ≥ 3, "
+                    "cap_rings {} ≥ 1 needed)",
+                    params.rings, params.segments, params.cap_rings));
   }
   // Round cones need |ra - rb| < length.
   if (std::abs(params.shoulder_radius - params.elbow_radius) >= params.upper_arm_length ||
@@ -100,7 +103,8 @@ Arm::Arm(const ArmParams& params) : m_params(params) {
     rings.emplace_back(static_cast<Index>(points.size()), seg);
     for (int j = 0; j < seg; ++j) {
       const double phi = 2 * std::numbers::pi * j / seg;
-      const Vec3 dir = Vec3(axial, radial_scale * std::cos(phi), radial_scale * std::sin(phi)).normalized();
+      const Vec3 dir =
+          Vec3(axial, radial_scale * std::cos(phi), radial_scale * std::sin(phi)).normalized();
       points.push_back(origin + ray_to_surface(sdf, origin, dir, t_max) * dir);
     }
   };
@@ -137,9 +141,11 @@ Arm::Arm(const ArmParams& params) : m_params(params) {
     }
   }
   m_rest.resize(static_cast<Eigen::Index>(points.size()), 3);
-  for (std::size_t i = 0; i < points.size(); ++i) m_rest.row(static_cast<Eigen::Index>(i)) = points[i].transpose();
+  for (std::size_t i = 0; i < points.size(); ++i)
+    m_rest.row(static_cast<Eigen::Index>(i)) = points[i].transpose();
   FaceArray face_array(static_cast<Eigen::Index>(faces.size()), 3);
-  for (std::size_t f = 0; f < faces.size(); ++f) face_array.row(static_cast<Eigen::Index>(f)) = faces[f];
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    face_array.row(static_cast<Eigen::Index>(f)) = faces[f];
   m_mesh = std::make_unique<TriangleMesh>(static_cast<Index>(points.size()), std::move(face_array));
 
   m_forearm_weight.resize(m_rest.rows());
@@ -197,10 +203,10 @@ Positions Arm::skin_points(const Positions& rest_points, const ArmPose& pose) co
 
 double Arm::signed_distance(const ArmSkeleton& s, const Vec3& p) const {
   const Vec3 wrist = s.wrist(m_params.forearm_length);
-  return std::min(round_cone_distance(p, s.shoulder(), s.elbow(), m_params.shoulder_radius,
-                                      m_params.elbow_radius),
-                  round_cone_distance(p, s.elbow(), wrist, m_params.elbow_radius,
-                                      m_params.wrist_radius));
+  return std::min(
+      round_cone_distance(p, s.shoulder(), s.elbow(), m_params.shoulder_radius,
+                          m_params.elbow_radius),
+      round_cone_distance(p, s.elbow(), wrist, m_params.elbow_radius, m_params.wrist_radius));
 }
 
 ArmDistance Arm::distance(const ArmSkeleton& s, const Vec3& p) const {
@@ -234,7 +240,8 @@ double Arm::radius_at(double x) const {
   if (x < 0 || x > total) return 0;
   const ArmSkeleton rest = skeleton(ArmPose{});
   const auto sdf = [&](const Vec3& p) { return signed_distance(rest, p); };
-  const double max_r = std::max({m_params.shoulder_radius, m_params.elbow_radius, m_params.wrist_radius});
+  const double max_r =
+      std::max({m_params.shoulder_radius, m_params.elbow_radius, m_params.wrist_radius});
   return ray_to_surface(sdf, Vec3(x, 0, 0), Vec3::UnitY(), 4 * max_r);
 }
 

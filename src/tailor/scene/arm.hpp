@@ -32,11 +32,11 @@ struct ArmParams {
 
 /// Joint angles (radians). All zero is the rest pose.
 struct ArmPose {
-  double shoulder_raise = 0;     ///< about +z: lifts the arm towards +y
-  double shoulder_swing = 0;     ///< about -y: swings the arm towards +z
-  double humeral_rotation = 0;   ///< about the upper arm's own axis
-  double elbow_flexion = 0;      ///< about -y in the upper arm frame: forearm towards +z
-  double forearm_twist = 0;      ///< about the forearm's own axis
+  double shoulder_raise = 0;    ///< about +z: lifts the arm towards +y
+  double shoulder_swing = 0;    ///< about -y: swings the arm towards +z
+  double humeral_rotation = 0;  ///< about the upper arm's own axis
+  double elbow_flexion = 0;     ///< about -y in the upper arm frame: forearm towards +z
+  double forearm_twist = 0;     ///< about the forearm's own axis
 };
 
 /// The skeleton's two bone transforms (bone frame to world) for one pose.
@@ -53,9 +53,9 @@ struct ArmSkeleton {
 
 /// Closest-point query on the arm's implicit volume.
 struct ArmDistance {
-  double distance = 0;  ///< signed distance to the surface (negative inside)
+  double distance = 0;          ///< signed distance to the surface (negative inside)
   Vec3 normal = Vec3::UnitY();  ///< outward unit direction of steepest distance increase
-  int bone = 0;          ///< 0: upper arm, 1: forearm (the nearer of the two)
+  int bone = 0;                 ///< 0: upper arm, 1: forearm (the nearer of the two)
 };
 
 /// A procedurally generated, skinned arm. The surface is closed (no boundary loop) and

@@ -15,7 +15,9 @@
 namespace tailor {
 namespace {
 
-double deg(double d) { return d * std::numbers::pi / 180.0; }
+double deg(double d) {
+  return d * std::numbers::pi / 180.0;
+}
 
 /// Quintic smoothstep: zero first and second derivatives at both ends.
 double smootherstep(double t) {
@@ -52,7 +54,9 @@ ArmPose Gesture::pose_at(double t) const {
   return lerp(a.pose, b.pose, smootherstep((t - a.time) / (b.time - a.time)));
 }
 
-std::vector<std::string> gesture_names() { return {"elbow", "raise", "twist"}; }
+std::vector<std::string> gesture_names() {
+  return {"elbow", "raise", "twist"};
+}
 
 Gesture make_gesture(const GestureParams& params) {
   if (!(params.speed > 0) || !std::isfinite(params.speed)) {

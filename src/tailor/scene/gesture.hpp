@@ -17,10 +17,10 @@ struct Keyframe {
 
 /// What to play and how fast.
 struct GestureParams {
-  std::string name = "elbow";     ///< `elbow`, `raise` or `twist` (see gesture_names())
-  double max_flexion_deg = 130;   ///< elbow flexion at the peak of the `elbow` gesture
-  double speed = 1.0;             ///< time scale (2: twice as fast)
-  double settle_time = 0.3;       ///< rest pose held first, so the sleeve settles (s)
+  std::string name = "elbow";    ///< `elbow`, `raise` or `twist` (see gesture_names())
+  double max_flexion_deg = 130;  ///< elbow flexion at the peak of the `elbow` gesture
+  double speed = 1.0;            ///< time scale (2: twice as fast)
+  double settle_time = 0.3;      ///< rest pose held first, so the sleeve settles (s)
 };
 
 /// Keyframed joint angles; the pose between two keyframes follows a quintic smoothstep,

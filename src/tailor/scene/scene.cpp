@@ -39,7 +39,8 @@ class FieldReader {
     const double x = v->get<double>();
     const bool ok = std::isfinite(x) && (open_lo ? x > lo : x >= lo) && x <= hi;
     if (!ok) {
-      fail(path(key), fmt::format("must be {} {} and ≤ {}, got {}", open_lo ? ">" : "≥", lo, hi, x));
+      fail(path(key),
+           fmt::format("must be {} {} and ≤ {}, got {}", open_lo ? ">" : "≥", lo, hi, x));
     }
     out = x;
   }
@@ -55,7 +56,8 @@ class FieldReader {
     }
     if (!is_int) fail_type(path(key), "an integer", *v);
     const double x = v->get<double>();
-    if (x < lo || x > hi) fail(path(key), fmt::format("must be an integer in [{}, {}], got {}", lo, hi, v->dump()));
+    if (x < lo || x > hi)
+      fail(path(key), fmt::format("must be an integer in [{}, {}], got {}", lo, hi, v->dump()));
     out = static_cast<int>(x);
   }
 
@@ -110,7 +112,8 @@ class FieldReader {
     return it == m_object.end() ? nullptr : &*it;
   }
 
-  [[noreturn]] void fail_type(const std::string& field, const char* expected, const json& got) const {
+  [[noreturn]] void fail_type(const std::string& field, const char* expected,
+                              const json& got) const {
     std::string shown = got.dump();
     if (shown.size() > 40) shown = shown.substr(0, 37) + "...";
     throw InputError(fmt::format("{}: field '{}' must be {}, got {} {}", m_source, field, expected,
@@ -150,7 +153,8 @@ SceneConfig parse_scene_config(const json& root, const std::string& source) {
     r.string("name", c.gesture.name);
     const auto names = gesture_names();
     if (std::find(names.begin(), names.end(), c.gesture.name) == names.end()) {
-      r.fail("gesture.name", fmt::format("must be one of elbow, raise, twist, got \"{}\"", c.gesture.name));
+      r.fail("gesture.name",
+             fmt::format("must be one of elbow, raise, twist, got \"{}\"", c.gesture.name));
     }
     r.number("max_flexion_deg", c.gesture.max_flexion_deg, 0, 160, false);
     r.number("speed", c.gesture.speed, 0, 100);
@@ -193,11 +197,13 @@ SceneConfig parse_scene_config(const json& root, const std::string& source) {
   // Cross-field checks the per-field ranges cannot express.
   const double arm_length = c.arm.upper_arm_length + c.arm.forearm_length;
   if (c.sleeve.start + c.sleeve.length > arm_length) {
-    top.fail("sleeve.length", fmt::format("sleeve.start + sleeve.length = {} m exceeds the arm's length {} m",
-                                          c.sleeve.start + c.sleeve.length, arm_length));
+    top.fail("sleeve.length",
+             fmt::format("sleeve.start + sleeve.length = {} m exceeds the arm's length {} m",
+                         c.sleeve.start + c.sleeve.length, arm_length));
   }
   if (std::abs(c.arm.shoulder_radius - c.arm.elbow_radius) >= c.arm.upper_arm_length) {
-    top.fail("arm.elbow_radius", "differs from arm.shoulder_radius by more than the upper arm's length");
+    top.fail("arm.elbow_radius",
+             "differs from arm.shoulder_radius by more than the upper arm's length");
   }
   if (std::abs(c.arm.elbow_radius - c.arm.wrist_radius) >= c.arm.forearm_length) {
     top.fail("arm.wrist_radius", "differs from arm.elbow_radius by more than the forearm's length");
@@ -227,10 +233,14 @@ SceneConfig load_scene_config(const std::filesystem::path& path) {
 
 json scene_config_to_json(const SceneConfig& c) {
   json j;
-  j["arm"] = {{"upper_arm_length", c.arm.upper_arm_length}, {"forearm_length", c.arm.forearm_length},
-              {"shoulder_radius", c.arm.shoulder_radius},   {"elbow_radius", c.arm.elbow_radius},
-              {"wrist_radius", c.arm.wrist_radius},         {"elbow_blend", c.arm.elbow_blend},
-              {"rings", c.arm.rings},                       {"segments", c.arm.segments},
+  j["arm"] = {{"upper_arm_length", c.arm.upper_arm_length},
+              {"forearm_length", c.arm.forearm_length},
+              {"shoulder_radius", c.arm.shoulder_radius},
+              {"elbow_radius", c.arm.elbow_radius},
+              {"wrist_radius", c.arm.wrist_radius},
+              {"elbow_blend", c.arm.elbow_blend},
+              {"rings", c.arm.rings},
+              {"segments", c.arm.segments},
               {"cap_rings", c.arm.cap_rings}};
   j["gesture"] = {{"name", c.gesture.name},
                   {"max_flexion_deg", c.gesture.max_flexion_deg},

@@ -15,7 +15,8 @@ namespace tailor {
 
 std::vector<Index> Sleeve::ring(Index r) const {
   std::vector<Index> ids(static_cast<std::size_t>(params.segments));
-  for (Index j = 0; j < params.segments; ++j) ids[static_cast<std::size_t>(j)] = r * params.segments + j;
+  for (Index j = 0; j < params.segments; ++j)
+    ids[static_cast<std::size_t>(j)] = r * params.segments + j;
   return ids;
 }
 
@@ -42,7 +43,8 @@ Sleeve make_sleeve(const Arm& arm, const SleeveParams& params) {
       !(params.start + params.length <= total)) {
     throw InputError(fmt::format(
         "sleeve must have positive slack and length and lie along the arm (start {} + length {} "
-        "≤ {} m)", params.start, params.length, total));
+        "≤ {} m)",
+        params.start, params.length, total));
   }
   const std::int64_t nv = static_cast<std::int64_t>(params.rings) * params.segments;
   if (nv > (std::int64_t{1} << 30)) throw InputError("sleeve resolution too high");
@@ -90,7 +92,8 @@ Sleeve make_sleeve(const Arm& arm, const SleeveParams& params) {
   for (Index r = 0; r + 1 < rings; ++r) {
     for (Index j = 0; j < seg; ++j) {
       const Index jn = (j + 1) % seg;
-      const Index a = r * seg + j, an = r * seg + jn, b = (r + 1) * seg + j, bn = (r + 1) * seg + jn;
+      const Index a = r * seg + j, an = r * seg + jn, b = (r + 1) * seg + j,
+                  bn = (r + 1) * seg + jn;
       if ((r + j) % 2 == 0) {
         faces.row(f++) << a, an, b;
         faces.row(f++) << an, bn, b;

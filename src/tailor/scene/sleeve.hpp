@@ -26,9 +26,9 @@ struct SleeveParams {
 /// with outward normals.
 struct Sleeve {
   SleeveParams params;
-  Positions rest;                       ///< rest (and initial) positions
-  std::shared_ptr<TriangleMesh> mesh;   ///< fixed connectivity
-  Index elbow_ring = 0;                 ///< ring nearest to the elbow in the rest pose
+  Positions rest;                      ///< rest (and initial) positions
+  std::shared_ptr<TriangleMesh> mesh;  ///< fixed connectivity
+  Index elbow_ring = 0;                ///< ring nearest to the elbow in the rest pose
   /// Rings nearest to the middle of the sleeve's upper-arm part and of its forearm part:
   /// the section loops of the paper's two radial-view observers.
   std::array<Index, 2> observer_rings{0, 0};

@@ -60,7 +60,8 @@ class BlockJacobi {
     m_inverse.assign(static_cast<std::size_t>(n), Mat3::Zero());
     for (Eigen::Index col = 0; col < m.outerSize(); ++col) {
       for (typename M::InnerIterator it(m, col); it; ++it) {
-        if (it.row() / 3 == col / 3) m_inverse[static_cast<std::size_t>(col / 3)](it.row() % 3, col % 3) = it.value();
+        if (it.row() / 3 == col / 3)
+          m_inverse[static_cast<std::size_t>(col / 3)](it.row() % 3, col % 3) = it.value();
       }
     }
     for (Mat3& block : m_inverse) {
@@ -74,7 +75,8 @@ class BlockJacobi {
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const {
     Eigen::VectorXd x(b.size());
     for (std::size_t i = 0; i < m_inverse.size(); ++i) {
-      x.segment<3>(static_cast<Eigen::Index>(3 * i)) = m_inverse[i] * b.segment<3>(static_cast<Eigen::Index>(3 * i));
+      x.segment<3>(static_cast<Eigen::Index>(3 * i)) =
+          m_inverse[i] * b.segment<3>(static_cast<Eigen::Index>(3 * i));
     }
     return x;
   }
@@ -90,7 +92,9 @@ double wrap_angle(double a) {
   return a;
 }
 
-Vec3 row3(const Positions& x, Index i) { return x.row(i).transpose(); }
+Vec3 row3(const Positions& x, Index i) {
+  return x.row(i).transpose();
+}
 
 }  // namespace
 
@@ -128,9 +132,9 @@ struct ClothModel::Impl {
   std::vector<Index> pinned;
   std::vector<char> is_pinned;
 
-  SparseMatrix pattern;               // K's pattern (full symmetric, 3x3 blocks)
-  std::vector<int> diagonal_index;    // value index of entry (k, k)
-  std::vector<int> pinned_zero_index; // entries in pinned rows or columns (diagonal excluded)
+  SparseMatrix pattern;                // K's pattern (full symmetric, 3x3 blocks)
+  std::vector<int> diagonal_index;     // value index of entry (k, k)
+  std::vector<int> pinned_zero_index;  // entries in pinned rows or columns (diagonal excluded)
   bool pinned_dirty = true;
 
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
@@ -182,15 +186,18 @@ struct ClothModel::Impl {
       for (int i = 0; i < 3; ++i) g[i] = r.cu[i] * wv + r.cv[i] * wu;
       if (f != nullptr) {
         for (int i = 0; i < 3; ++i) {
-          const Vec3 grad = r.area * (ks * (cu * r.cu[i] * hu + cv * r.cv[i] * hv) + ksh * s * g[i]);
+          const Vec3 grad =
+              r.area * (ks * (cu * r.cu[i] * hu + cv * r.cv[i] * hv) + ksh * s * g[i]);
           f->row(vid[i]) -= grad.transpose();
         }
       }
       if (k_values != nullptr) {
         // Stretch: the Hessian's positive part along and (when stretched) across the fibre.
         const Mat3 I3 = Mat3::Identity();
-        const Mat3 pu = hu * hu.transpose() + std::max(0.0, lu > 0 ? 1 - 1 / lu : 0.0) * (I3 - hu * hu.transpose());
-        const Mat3 pv = hv * hv.transpose() + std::max(0.0, lv > 0 ? 1 - 1 / lv : 0.0) * (I3 - hv * hv.transpose());
+        const Mat3 pu = hu * hu.transpose() +
+                        std::max(0.0, lu > 0 ? 1 - 1 / lu : 0.0) * (I3 - hu * hu.transpose());
+        const Mat3 pv = hv * hv.transpose() +
+                        std::max(0.0, lv > 0 ? 1 - 1 / lv : 0.0) * (I3 - hv * hv.transpose());
         for (int i = 0; i < 3; ++i) {
           for (int j = 0; j < 3; ++j) {
             const Mat3 block = r.area * (ks * (r.cu[i] * r.cu[j] * pu + r.cv[i] * r.cv[j] * pv) +
@@ -210,7 +217,8 @@ struct ClothModel::Impl {
         const double k = kb * h.weight;
         energy += 0.5 * k * d * d;
         if (f != nullptr) {
-          for (int i = 0; i < 4; ++i) f->row(h.v[i]) -= (k * d * grad.segment<3>(3 * i)).transpose();
+          for (int i = 0; i < 4; ++i)
+            f->row(h.v[i]) -= (k * d * grad.segment<3>(3 * i)).transpose();
         }
         if (k_values != nullptr) {
           for (int i = 0; i < 4; ++i) {
@@ -255,8 +263,8 @@ ClothModel::ClothModel(const TriangleMesh& mesh, const Positions& rest,
     throw InputError("cloth material: density must be positive and stiffnesses and damping ≥ 0");
   }
   if (rest.rows() != mesh.num_vertices()) {
-    throw InputError(fmt::format("cloth: {} rest positions for {} vertices", rest.rows(),
-                                 mesh.num_vertices()));
+    throw InputError(
+        fmt::format("cloth: {} rest positions for {} vertices", rest.rows(), mesh.num_vertices()));
   }
   m.material = material;
   m.nv = mesh.num_vertices();
@@ -268,7 +276,8 @@ ClothModel::ClothModel(const TriangleMesh& mesh, const Positions& rest,
   m.face_rest.resize(static_cast<std::size_t>(nf));
   std::vector<double> face_area(static_cast<std::size_t>(nf));
   for (Index t = 0; t < nf; ++t) {
-    const Vec3 p0 = row3(rest, m.faces(t, 0)), p1 = row3(rest, m.faces(t, 1)), p2 = row3(rest, m.faces(t, 2));
+    const Vec3 p0 = row3(rest, m.faces(t, 0)), p1 = row3(rest, m.faces(t, 1)),
+               p2 = row3(rest, m.faces(t, 2));
     const Vec3 n = (p1 - p0).cross(p2 - p0);
     const double area = 0.5 * n.norm();
     if (!(area > 1e-14 * std::max(1.0, (p1 - p0).squaredNorm()))) {
@@ -310,8 +319,10 @@ ClothModel::ClothModel(const TriangleMesh& mesh, const Positions& rest,
     Hinge h;
     h.v = {a, b, third(f0), third(f1)};
     const double len2 = (row3(rest, a) - row3(rest, b)).squaredNorm();
-    h.weight = 3 * len2 / (face_area[static_cast<std::size_t>(f0)] + face_area[static_cast<std::size_t>(f1)]);
-    h.rest_angle = dihedral_angle(row3(rest, a), row3(rest, b), row3(rest, h.v[2]), row3(rest, h.v[3]));
+    h.weight = 3 * len2 /
+               (face_area[static_cast<std::size_t>(f0)] + face_area[static_cast<std::size_t>(f1)]);
+    h.rest_angle =
+        dihedral_angle(row3(rest, a), row3(rest, b), row3(rest, h.v[2]), row3(rest, h.v[3]));
     m.hinges.push_back(h);
   }
 
@@ -337,7 +348,8 @@ ClothModel::ClothModel(const TriangleMesh& mesh, const Positions& rest,
     list.erase(std::unique(list.begin(), list.end()), list.end());
     nnz += 9 * static_cast<std::int64_t>(list.size());
   }
-  if (nnz > std::numeric_limits<int>::max()) throw InputError("cloth: mesh too large for the sparse system");
+  if (nnz > std::numeric_limits<int>::max())
+    throw InputError("cloth: mesh too large for the sparse system");
   m.pattern.resize(3 * m.nv, 3 * m.nv);
   m.pattern.resizeNonZeros(static_cast<Eigen::Index>(nnz));
   int* outer = m.pattern.outerIndexPtr();
@@ -361,9 +373,15 @@ ClothModel::~ClothModel() = default;
 ClothModel::ClothModel(ClothModel&&) noexcept = default;
 ClothModel& ClothModel::operator=(ClothModel&&) noexcept = default;
 
-const ClothMaterial& ClothModel::material() const { return m_impl->material; }
-const Eigen::VectorXd& ClothModel::masses() const { return m_impl->masses; }
-const std::vector<Index>& ClothModel::pinned() const { return m_impl->pinned; }
+const ClothMaterial& ClothModel::material() const {
+  return m_impl->material;
+}
+const Eigen::VectorXd& ClothModel::masses() const {
+  return m_impl->masses;
+}
+const std::vector<Index>& ClothModel::pinned() const {
+  return m_impl->pinned;
+}
 
 void ClothModel::set_solver(ClothSolver solver, double cg_tolerance) {
   m_impl->solver = solver;
@@ -374,7 +392,8 @@ void ClothModel::set_pinned(std::vector<Index> vertices) {
   std::sort(vertices.begin(), vertices.end());
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
   for (Index v : vertices) {
-    if (v < 0 || v >= m_impl->nv) throw InputError(fmt::format("cloth: pinned vertex {} out of range", v));
+    if (v < 0 || v >= m_impl->nv)
+      throw InputError(fmt::format("cloth: pinned vertex {} out of range", v));
   }
   m_impl->pinned = std::move(vertices);
   std::fill(m_impl->is_pinned.begin(), m_impl->is_pinned.end(), 0);
@@ -382,7 +401,9 @@ void ClothModel::set_pinned(std::vector<Index> vertices) {
   m_impl->pinned_dirty = true;
 }
 
-double ClothModel::elastic_energy(const Positions& x) const { return m_impl->evaluate(x, nullptr, nullptr); }
+double ClothModel::elastic_energy(const Positions& x) const {
+  return m_impl->evaluate(x, nullptr, nullptr);
+}
 
 Positions ClothModel::elastic_forces(const Positions& x) const {
   Positions f = Positions::Zero(x.rows(), 3);
@@ -409,8 +430,9 @@ ClothEnergy ClothModel::energy(const Positions& x, const Positions& v, const Vec
   return e;
 }
 
-ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0, const Positions& pinned_targets,
-                               const Vec3& gravity, double h, Positions& x1, Positions& v1,
+ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0,
+                               const Positions& pinned_targets, const Vec3& gravity, double h,
+                               Positions& x1, Positions& v1,
                                const std::vector<ContactPlane>& contacts) {
   Impl& m = *m_impl;
   const Index n = 3 * m.nv;
@@ -438,14 +460,17 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0, const P
   for (Index i = 0; i < m.nv; ++i) {
     for (int c = 0; c < 3; ++c) {
       const Index k = 3 * i + c;
-      b[k] = h * (f(i, c) + m.masses[i] * gravity[c] - alpha * m.masses[i] * v[k] - (beta + h) * Kv[k]);
+      b[k] = h *
+             (f(i, c) + m.masses[i] * gravity[c] - alpha * m.masses[i] * v[k] - (beta + h) * Kv[k]);
     }
   }
   // A = (1 + h α) M + (h β + h²) K.
   const double s = h * beta + h * h;
   for (int k = 0; k < A.nonZeros(); ++k) values[k] *= s;
   for (Index i = 0; i < m.nv; ++i) {
-    for (int c = 0; c < 3; ++c) values[m.diagonal_index[static_cast<std::size_t>(3 * i + c)]] += (1 + h * alpha) * m.masses[i];
+    for (int c = 0; c < 3; ++c)
+      values[m.diagonal_index[static_cast<std::size_t>(3 * i + c)]] +=
+          (1 + h * alpha) * m.masses[i];
   }
 
   // Contact springs: A += h² k n nᵀ, b += h (f0 - h k n (n·v0)), f0 = -k n (n·(x0 - q)).
@@ -453,7 +478,9 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0, const P
     const Index i = c.vertex;
     if (i < 0 || i >= m.nv || m.is_pinned[static_cast<std::size_t>(i)] != 0) continue;
     const Vec3 xi = row3(x0, i), vi = row3(v0, i);
-    const Vec3 rhs = h * (-c.stiffness * c.normal.dot(xi - c.point) - h * c.stiffness * c.normal.dot(vi)) * c.normal;
+    const Vec3 rhs =
+        h * (-c.stiffness * c.normal.dot(xi - c.point) - h * c.stiffness * c.normal.dot(vi)) *
+        c.normal;
     for (int a = 0; a < 3; ++a) b[3 * i + a] += rhs[a];
     m.add_block(values, i, i, (h * h * c.stiffness) * c.normal * c.normal.transpose());
   }
@@ -463,7 +490,8 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0, const P
   for (std::size_t p = 0; p < m.pinned.size(); ++p) {
     const Index i = m.pinned[p];
     for (int c = 0; c < 3; ++c) {
-      dv_pinned[3 * i + c] = (pinned_targets(static_cast<Eigen::Index>(p), c) - x0(i, c)) / h - v0(i, c);
+      dv_pinned[3 * i + c] =
+          (pinned_targets(static_cast<Eigen::Index>(p), c) - x0(i, c)) / h - v0(i, c);
     }
   }
   if (!m.pinned.empty()) {

@@ -19,12 +19,12 @@ namespace tailor {
 
 /// Material of the cloth (SI units).
 struct ClothMaterial {
-  double density = 0.15;             ///< area density (kg/m²)
-  double stretch_stiffness = 500;    ///< warp/weft stretch stiffness (N/m)
-  double shear_stiffness = 50;       ///< in-plane shear stiffness (N/m)
-  double bending_stiffness = 1e-5;   ///< bending stiffness (N·m)
-  double stiffness_damping = 2e-3;   ///< Rayleigh damping proportional to stiffness (s)
-  double air_damping = 0.2;          ///< Rayleigh damping proportional to mass (1/s)
+  double density = 0.15;            ///< area density (kg/m²)
+  double stretch_stiffness = 500;   ///< warp/weft stretch stiffness (N/m)
+  double shear_stiffness = 50;      ///< in-plane shear stiffness (N/m)
+  double bending_stiffness = 1e-5;  ///< bending stiffness (N·m)
+  double stiffness_damping = 2e-3;  ///< Rayleigh damping proportional to stiffness (s)
+  double air_damping = 0.2;         ///< Rayleigh damping proportional to mass (1/s)
 };
 
 /// Energies of a state (J).
@@ -54,10 +54,10 @@ enum class ClothSolver {
 
 /// What one implicit step did.
 struct ClothStepInfo {
-  bool direct = true;      ///< sparse LDLT (true) or conjugate gradient (false)
-  int iterations = 0;      ///< CG iterations (0 for LDLT)
-  double residual = 0;     ///< relative residual of the linear solve
-  bool ok = true;          ///< false if the solve failed (then the step keeps v0)
+  bool direct = true;   ///< sparse LDLT (true) or conjugate gradient (false)
+  int iterations = 0;   ///< CG iterations (0 for LDLT)
+  double residual = 0;  ///< relative residual of the linear solve
+  bool ok = true;       ///< false if the solve failed (then the step keeps v0)
 };
 
 /// Implicit cloth model on a fixed mesh.

@@ -73,7 +73,9 @@ double ms_since(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
 }
 
-Vec3 row(const Positions& x, Index i) { return x.row(i).transpose(); }
+Vec3 row(const Positions& x, Index i) {
+  return x.row(i).transpose();
+}
 
 /// Closest point of triangle (a, b, c) to p, as barycentric weights (Ericson 2005, 5.1.5).
 Vec3 closest_barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -227,8 +229,8 @@ struct ContactSolver::Impl {
         detector(cloth_, x_build, detection, std::move(section_loops)),
         params(params_) {
     if (masses.size() != cloth.num_vertices()) {
-      throw InputError(fmt::format("contact solver: {} masses for {} cloth vertices",
-                                   masses.size(), cloth.num_vertices()));
+      throw InputError(fmt::format("contact solver: {} masses for {} cloth vertices", masses.size(),
+                                   cloth.num_vertices()));
     }
     inv_mass.resize(masses.size());
     pinned.assign(static_cast<std::size_t>(masses.size()), 0);
@@ -256,7 +258,8 @@ struct ContactSolver::Impl {
   std::vector<Aabb> cloth_edge_boxes(const Positions& a, const Positions& b) const {
     std::vector<Aabb> boxes(static_cast<std::size_t>(cloth.num_edges()));
     for (Index e = 0; e < cloth.num_edges(); ++e) {
-      for (int k = 0; k < 2; ++k) boxes[e].extend(point_box(row(a, cloth.edges()(e, k)), row(b, cloth.edges()(e, k))));
+      for (int k = 0; k < 2; ++k)
+        boxes[e].extend(point_box(row(a, cloth.edges()(e, k)), row(b, cloth.edges()(e, k))));
     }
     return boxes;
   }
@@ -264,7 +267,8 @@ struct ContactSolver::Impl {
     std::vector<Aabb> boxes(static_cast<std::size_t>(cloth.num_faces()));
     for (Index f = 0; f < cloth.num_faces(); ++f) {
       for (int k = 0; k < 3; ++k) {
-        boxes[f].extend(point_box(row(a, cloth.faces()(f, k)), row(b, cloth.faces()(f, k)), inflate));
+        boxes[f].extend(
+            point_box(row(a, cloth.faces()(f, k)), row(b, cloth.faces()(f, k)), inflate));
       }
     }
     return boxes;
@@ -275,9 +279,10 @@ struct ContactSolver::Impl {
     if (obstacle.x0.rows() != m.num_vertices() || obstacle.x1.rows() != m.num_vertices()) {
       throw InputError("contact solver: obstacle positions do not match its mesh");
     }
-    std::vector<Aabb> vb(static_cast<std::size_t>(m.num_vertices())), eb(static_cast<std::size_t>(m.num_edges())),
-        fb(static_cast<std::size_t>(m.num_faces()));
-    for (Index v = 0; v < m.num_vertices(); ++v) vb[v] = point_box(row(obstacle.x0, v), row(obstacle.x1, v));
+    std::vector<Aabb> vb(static_cast<std::size_t>(m.num_vertices())),
+        eb(static_cast<std::size_t>(m.num_edges())), fb(static_cast<std::size_t>(m.num_faces()));
+    for (Index v = 0; v < m.num_vertices(); ++v)
+      vb[v] = point_box(row(obstacle.x0, v), row(obstacle.x1, v));
     for (Index e = 0; e < m.num_edges(); ++e) {
       eb[e].extend(vb[m.edges()(e, 0)]);
       eb[e].extend(vb[m.edges()(e, 1)]);
@@ -338,17 +343,20 @@ struct ContactSolver::Impl {
       CcdResult r;
       if (c.kind == ArmCollision::vertex_face) {
         const auto F = m.faces().row(c.b);
-        r = vertex_face_ccd(VertexFaceQuery{row(X0, c.a), row(Y0, F(0)), row(Y0, F(1)), row(Y0, F(2)),
-                                            row(x1, c.a), row(Y1, F(0)), row(Y1, F(1)), row(Y1, F(2))});
+        r = vertex_face_ccd(VertexFaceQuery{row(X0, c.a), row(Y0, F(0)), row(Y0, F(1)),
+                                            row(Y0, F(2)), row(x1, c.a), row(Y1, F(0)),
+                                            row(Y1, F(1)), row(Y1, F(2))});
       } else if (c.kind == ArmCollision::face_vertex) {
         const auto F = cloth.faces().row(c.a);
-        r = vertex_face_ccd(VertexFaceQuery{row(Y0, c.b), row(X0, F(0)), row(X0, F(1)), row(X0, F(2)),
-                                            row(Y1, c.b), row(x1, F(0)), row(x1, F(1)), row(x1, F(2))});
+        r = vertex_face_ccd(VertexFaceQuery{row(Y0, c.b), row(X0, F(0)), row(X0, F(1)),
+                                            row(X0, F(2)), row(Y1, c.b), row(x1, F(0)),
+                                            row(x1, F(1)), row(x1, F(2))});
       } else {
         const auto E = cloth.edges().row(c.a);
         const auto G = m.edges().row(c.b);
         r = edge_edge_ccd(EdgeEdgeQuery{row(X0, E(0)), row(X0, E(1)), row(Y0, G(0)), row(Y0, G(1)),
-                                        row(x1, E(0)), row(x1, E(1)), row(Y1, G(0)), row(Y1, G(1))});
+                                        row(x1, E(0)), row(x1, E(1)), row(Y1, G(0)),
+                                        row(Y1, G(1))});
       }
       if (r.hit) {
         hit[i] = 1;
@@ -453,7 +461,8 @@ struct ContactSolver::Impl {
     Vec3 change = dn * c.normal;
     const Vec3 tangential = disp - c.normal.dot(disp) * c.normal;
     const double tl = tangential.norm();
-    if (tl > 0 && params.friction > 0) change -= std::min(1.0, params.friction * dn / tl) * tangential;
+    if (tl > 0 && params.friction > 0)
+      change -= std::min(1.0, params.friction * dn / tl) * tangential;
     for (int k = 0; k < c.n; ++k) {
       const Slot& s = c.slots[k];
       if (s.cloth < 0 || inv_mass[s.cloth] == 0) continue;
@@ -502,7 +511,8 @@ struct ContactSolver::Impl {
     } else {
       const auto E = cloth.edges().row(col.a);
       const auto G = m.edges().row(col.b);
-      c.slots = {cloth_slot(E(0), x1, 0), cloth_slot(E(1), x1, 0), arm_slot(G(0), 0), arm_slot(G(1), 0)};
+      c.slots = {cloth_slot(E(0), x1, 0), cloth_slot(E(1), x1, 0), arm_slot(G(0), 0),
+                 arm_slot(G(1), 0)};
       finish_edge_edge(c, col.toi);
     }
     return c;
@@ -516,7 +526,9 @@ struct ContactSolver::Impl {
     const double h = params.thickness;
     std::vector<Aabb> arm_boxes(static_cast<std::size_t>(m.num_faces()));
     for (Index f = 0; f < m.num_faces(); ++f) {
-      for (int k = 0; k < 3; ++k) arm_boxes[f].extend(point_box(row(arm->x1, m.faces()(f, k)), row(arm->x1, m.faces()(f, k)), h));
+      for (int k = 0; k < 3; ++k)
+        arm_boxes[f].extend(
+            point_box(row(arm->x1, m.faces()(f, k)), row(arm->x1, m.faces()(f, k)), h));
     }
     if (arm_near_face_bvh.num_primitives() != m.num_faces() || arm_mesh_changed) {
       arm_near_face_bvh = Bvh(arm_boxes);
@@ -583,12 +595,16 @@ struct ContactSolver::Impl {
     const Bvh& faces = cloth_near_face_bvh;
     std::vector<Aabb> edge_boxes(static_cast<std::size_t>(cloth.num_edges()));
     for (Index e = 0; e < cloth.num_edges(); ++e) {
-      for (int k = 0; k < 2; ++k) edge_boxes[e].extend(point_box(row(x1, cloth.edges()(e, k)), row(x1, cloth.edges()(e, k)), 0.5 * h));
+      for (int k = 0; k < 2; ++k)
+        edge_boxes[e].extend(
+            point_box(row(x1, cloth.edges()(e, k)), row(x1, cloth.edges()(e, k)), 0.5 * h));
     }
     struct Pair {
       int kind;  // 0: VF (vertex, face), 1: EE (edge, edge)
       Index a, b;
-      bool operator<(const Pair& o) const { return std::tie(kind, a, b) < std::tie(o.kind, o.a, o.b); }
+      bool operator<(const Pair& o) const {
+        return std::tie(kind, a, b) < std::tie(o.kind, o.a, o.b);
+      }
       bool operator==(const Pair& o) const { return kind == o.kind && a == o.a && b == o.b; }
     };
     std::vector<Pair> pairs;
@@ -621,8 +637,8 @@ struct ContactSolver::Impl {
     for (const Pair& pr : pairs) {
       Contact c;
       if (pr.kind == 0) {
-        c.slots = {cloth_slot(pr.a, x1, 0), cloth_slot(F(pr.b, 0), x1, 0), cloth_slot(F(pr.b, 1), x1, 0),
-                   cloth_slot(F(pr.b, 2), x1, 0)};
+        c.slots = {cloth_slot(pr.a, x1, 0), cloth_slot(F(pr.b, 0), x1, 0),
+                   cloth_slot(F(pr.b, 1), x1, 0), cloth_slot(F(pr.b, 2), x1, 0)};
         finish_vertex_face(c, 1.0);
       } else {
         const auto E = cloth.edges().row(pr.a), D = cloth.edges().row(pr.b);
@@ -680,13 +696,15 @@ struct ContactSolver::Impl {
     if (best_face >= 0) {
       const auto F = m.faces().row(best_face);
       const auto point = [&](const Positions& y) {
-        return Vec3(best_bary[0] * row(y, F(0)) + best_bary[1] * row(y, F(1)) + best_bary[2] * row(y, F(2)));
+        return Vec3(best_bary[0] * row(y, F(0)) + best_bary[1] * row(y, F(1)) +
+                    best_bary[2] * row(y, F(2)));
       };
       const auto normal = [&](const Positions& y) {
         Vec3 n = (row(y, F(1)) - row(y, F(0))).cross(row(y, F(2)) - row(y, F(0)));
         return n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero();
       };
-      const Vec3 q0 = point(arm->x0), q1 = point(arm->x1), n0 = normal(arm->x0), n1 = normal(arm->x1);
+      const Vec3 q0 = point(arm->x0), q1 = point(arm->x1), n0 = normal(arm->x0),
+                 n1 = normal(arm->x1);
       Vec3 offset = p - q0;
       if (n0.norm() > 0 && n1.norm() > 0) {
         offset = Eigen::Quaterniond::FromTwoVectors(n0, n1) * offset;
@@ -761,7 +779,8 @@ struct ContactSolver::Impl {
     const Vec3 omega = svd.matrixV() * sv.asDiagonal() * svd.matrixU().transpose() * angular;
     const double angle = omega.norm();
     if (angle > 0) rotation = Eigen::AngleAxisd(angle, omega / angle).toRotationMatrix();
-    for (Index v : members) x1.row(v) = (c0 + displacement + rotation * (row(*x0, v) - c0)).transpose();
+    for (Index v : members)
+      x1.row(v) = (c0 + displacement + rotation * (row(*x0, v) - c0)).transpose();
   }
 
   // ---- the whole substep ---------------------------------------------------------------
@@ -905,7 +924,8 @@ struct ContactSolver::Impl {
       }
       const auto handle = [&](std::initializer_list<Index> vs) {
         bool anchored = false;  // the pair holds a vertex that moves on its own
-        for (Index v : vs) anchored = anchored || pinned[v] || state[v] == VertexState::arm_following;
+        for (Index v : vs)
+          anchored = anchored || pinned[v] || state[v] == VertexState::arm_following;
         for (Index v : vs) {
           if (anchored && arm != nullptr) {
             follow(v);
@@ -921,7 +941,8 @@ struct ContactSolver::Impl {
       for (const auto& c : self.collisions.edge_edge) handle({c.a0, c.a1, c.b0, c.b1});
       if (!changed) {
         stats.unresolved = static_cast<std::int64_t>(arm_hits.size() + self.collisions.size());
-        spdlog::warn("contact: {} collisions left that the last resort cannot undo", stats.unresolved);
+        spdlog::warn("contact: {} collisions left that the last resort cannot undo",
+                     stats.unresolved);
         break;
       }
     }
@@ -938,8 +959,7 @@ struct ContactSolver::Impl {
 
 ContactSolver::ContactSolver(const TriangleMesh& cloth, const Positions& x_build,
                              Eigen::VectorXd masses, DetectionConfig detection,
-                             ContactParams params,
-                             std::vector<std::vector<Index>> section_loops)
+                             ContactParams params, std::vector<std::vector<Index>> section_loops)
     : m_impl(std::make_unique<Impl>(cloth, x_build, std::move(masses), detection, params,
                                     std::move(section_loops))) {}
 ContactSolver::~ContactSolver() = default;

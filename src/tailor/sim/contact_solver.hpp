@@ -22,28 +22,28 @@ struct KinematicObstacle {
 
 /// Contact parameters (SI units: metres, seconds).
 struct ContactParams {
-  double thickness = 1e-3;     ///< repulsion distance between cloth and cloth / arm
-  double friction = 0.3;       ///< Coulomb friction coefficient
+  double thickness = 1e-3;          ///< repulsion distance between cloth and cloth / arm
+  double friction = 0.3;            ///< Coulomb friction coefficient
   int max_impulse_iterations = 20;  ///< CCD impulse passes before impact zones
   int max_zone_iterations = 100;    ///< impact-zone passes before the last resort
 };
 
 /// What one call to ContactSolver::resolve did.
 struct ContactStats {
-  std::int64_t self_collisions = 0;    ///< cloth-cloth VF+EE collisions found (first pass)
-  std::int64_t obstacle_collisions = 0;  ///< cloth-arm collisions found (first pass)
-  std::int64_t repulsions = 0;          ///< proximity repulsion impulses applied
-  std::int64_t impulses = 0;            ///< CCD impulses applied over all passes
-  std::int64_t impulse_iterations = 0;  ///< CCD passes run
-  std::int64_t impact_zones = 0;        ///< rigid impact zones formed
-  std::int64_t zone_iterations = 0;     ///< impact-zone passes run
-  bool last_resort = false;             ///< positions were reverted to keep the invariant
-  std::int64_t reverted_vertices = 0;   ///< last resort: vertices put back to x0
+  std::int64_t self_collisions = 0;         ///< cloth-cloth VF+EE collisions found (first pass)
+  std::int64_t obstacle_collisions = 0;     ///< cloth-arm collisions found (first pass)
+  std::int64_t repulsions = 0;              ///< proximity repulsion impulses applied
+  std::int64_t impulses = 0;                ///< CCD impulses applied over all passes
+  std::int64_t impulse_iterations = 0;      ///< CCD passes run
+  std::int64_t impact_zones = 0;            ///< rigid impact zones formed
+  std::int64_t zone_iterations = 0;         ///< impact-zone passes run
+  bool last_resort = false;                 ///< positions were reverted to keep the invariant
+  std::int64_t reverted_vertices = 0;       ///< last resort: vertices put back to x0
   std::int64_t arm_following_vertices = 0;  ///< last resort / zones: vertices moved with the arm
   /// Collisions still present when the last resort could change nothing more (0 means the
   /// substep is certified collision-free; see contact_solver.cpp for when it can be > 0).
   std::int64_t unresolved = 0;
-  DetectionStats detection;             ///< self-collision detection stats of the first pass
+  DetectionStats detection;  ///< self-collision detection stats of the first pass
   double detection_ms = 0, response_ms = 0;
 };
 

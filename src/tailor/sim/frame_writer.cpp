@@ -23,7 +23,9 @@ void write_atomically(const std::filesystem::path& path, Write&& write) {
   write(tmp);
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
-  if (ec) throw InputError(fmt::format("cannot rename '{}' to '{}': {}", tmp.string(), path.string(), ec.message()));
+  if (ec)
+    throw InputError(
+        fmt::format("cannot rename '{}' to '{}': {}", tmp.string(), path.string(), ec.message()));
 }
 
 }  // namespace
@@ -42,7 +44,8 @@ FrameWriter::FrameWriter(std::filesystem::path directory) : m_directory(std::mov
   // A stale summary from an earlier run would describe the wrong frames.
   std::filesystem::remove(m_directory / "summary.json", ec);
   m_steps.open(m_directory / "steps.jsonl", std::ios::out | std::ios::trunc);
-  if (!m_steps) throw InputError(fmt::format("cannot write '{}'", (m_directory / "steps.jsonl").string()));
+  if (!m_steps)
+    throw InputError(fmt::format("cannot write '{}'", (m_directory / "steps.jsonl").string()));
 }
 
 void FrameWriter::write_frame(int frame, const Positions& cloth, const FaceArray& cloth_faces,
@@ -61,7 +64,8 @@ void FrameWriter::append_steps(const std::vector<StepRecord>& records) {
   }
   m_steps << text;
   m_steps.flush();
-  if (!m_steps) throw InputError(fmt::format("cannot write '{}'", (m_directory / "steps.jsonl").string()));
+  if (!m_steps)
+    throw InputError(fmt::format("cannot write '{}'", (m_directory / "steps.jsonl").string()));
 }
 
 void FrameWriter::write_summary(const nlohmann::json& summary) {

@@ -29,24 +29,30 @@ double ms_since(Clock::time_point start) {
 
 void to_json(nlohmann::json& j, const StepRecord& r) {
   const ContactStats& c = r.contact;
-  j = nlohmann::json{
-      {"frame", r.frame},
-      {"substep", r.substep},
-      {"time", r.time},
-      {"self_collisions", c.self_collisions},
-      {"obstacle_collisions", c.obstacle_collisions},
-      {"repulsions", c.repulsions},
-      {"impulses", c.impulses},
-      {"impulse_iterations", c.impulse_iterations},
-      {"impact_zones", c.impact_zones},
-      {"last_resort", c.last_resort},
-      {"arm_contacts", r.arm_contacts},
-      {"arm_projected", r.arm_projected},
-      {"solver", {{"direct", r.cloth.direct}, {"iterations", r.cloth.iterations},
-                  {"residual", r.cloth.residual}, {"ok", r.cloth.ok}}},
-      {"detection", c.detection},
-      {"ms", {{"forces_solve", r.forces_solve_ms}, {"detection", r.detection_ms},
-              {"response", r.response_ms}, {"check", r.check_ms}, {"step", r.step_ms}}}};
+  j = nlohmann::json{{"frame", r.frame},
+                     {"substep", r.substep},
+                     {"time", r.time},
+                     {"self_collisions", c.self_collisions},
+                     {"obstacle_collisions", c.obstacle_collisions},
+                     {"repulsions", c.repulsions},
+                     {"impulses", c.impulses},
+                     {"impulse_iterations", c.impulse_iterations},
+                     {"impact_zones", c.impact_zones},
+                     {"last_resort", c.last_resort},
+                     {"arm_contacts", r.arm_contacts},
+                     {"arm_projected", r.arm_projected},
+                     {"solver",
+                      {{"direct", r.cloth.direct},
+                       {"iterations", r.cloth.iterations},
+                       {"residual", r.cloth.residual},
+                       {"ok", r.cloth.ok}}},
+                     {"detection", c.detection},
+                     {"ms",
+                      {{"forces_solve", r.forces_solve_ms},
+                       {"detection", r.detection_ms},
+                       {"response", r.response_ms},
+                       {"check", r.check_ms},
+                       {"step", r.step_ms}}}};
   if (r.checked) {
     j["intersections"] = {{"self", r.self_intersections}, {"obstacle", r.obstacle_intersections}};
   }
@@ -60,7 +66,7 @@ struct Simulation::Impl {
   std::vector<Index> pinned;
   Positions pinned_rest;
   std::vector<char> fixed;
-  std::vector<char> released;      // arm contacts let go (their spring pulled last step)
+  std::vector<char> released;  // arm contacts let go (their spring pulled last step)
   std::vector<Index> projected_ids;
   Positions x, v, y;
   ArmSkeleton skeleton;
@@ -70,9 +76,7 @@ struct Simulation::Impl {
   SimulationTotals totals;
 
   Impl(const SceneConfig& config, SimulationOptions opts)
-      : scene(config),
-        options(opts),
-        cloth([&]() -> ClothModel {
+      : scene(config), options(opts), cloth([&]() -> ClothModel {
           const Positions warp = scene.sleeve().warp_directions();
           return ClothModel(*scene.sleeve().mesh, scene.sleeve().rest, config.material, &warp);
         }()) {
@@ -95,13 +99,14 @@ struct Simulation::Impl {
     // The pose at t = 0 may differ from the rest pose the sleeve was built in.
     if (pinned.size() > 0) {
       const Positions targets = scene.arm().skin_points(pinned_rest, pose0);
-      for (std::size_t i = 0; i < pinned.size(); ++i) x.row(pinned[i]) = targets.row(static_cast<Eigen::Index>(i));
+      for (std::size_t i = 0; i < pinned.size(); ++i)
+        x.row(pinned[i]) = targets.row(static_cast<Eigen::Index>(i));
     }
     if (options.contact) {
       Eigen::VectorXd masses = cloth.masses();
       for (Index p : pinned) masses[p] = std::numeric_limits<double>::infinity();
-      contact = std::make_unique<ContactSolver>(*sleeve.mesh, x, masses, options.detection, config.contact,
-                                                scene.observer_loops());
+      contact = std::make_unique<ContactSolver>(*sleeve.mesh, x, masses, options.detection,
+                                                config.contact, scene.observer_loops());
     }
   }
 
@@ -124,16 +129,17 @@ struct Simulation::Impl {
 
     // Cloth on the arm: contact springs in the solve, friction, then a safety projection.
     const double margin = kArmMarginFactor * config.contact.thickness;
-    const double arm_friction = options.arm_friction >= 0 ? options.arm_friction : config.contact.friction;
+    const double arm_friction =
+        options.arm_friction >= 0 ? options.arm_friction : config.contact.friction;
     const std::vector<ContactPlane> planes =
         arm_contact_planes(arm, skeleton, skeleton1, x, cloth.masses(), h, margin, 0.5 * margin,
                            kArmContactStiffness, fixed, released);
     Positions x1, v1;
     record.cloth = cloth.step(x, v, targets, config.gravity, h, x1, v1, planes);
-    record.arm_contacts = finish_arm_contacts(planes, arm, skeleton, skeleton1, x, x1, cloth.masses(),
-                                              h, arm_friction, released);
-    const ArmCollisionStats arm_stats = project_out_of_arm(
-        arm, skeleton, skeleton1, x, x1, margin, arm_friction, fixed, &projected_ids);
+    record.arm_contacts = finish_arm_contacts(planes, arm, skeleton, skeleton1, x, x1,
+                                              cloth.masses(), h, arm_friction, released);
+    const ArmCollisionStats arm_stats = project_out_of_arm(arm, skeleton, skeleton1, x, x1, margin,
+                                                           arm_friction, fixed, &projected_ids);
     for (Index i : projected_ids) released[static_cast<std::size_t>(i)] = 0;
     record.arm_projected = arm_stats.projected;
     record.forces_solve_ms = ms_since(step_start);
@@ -155,7 +161,8 @@ struct Simulation::Impl {
     if (options.check_intersections ||
         (options.check_frames && substep_index + 1 == config.substeps)) {
       const auto check_start = Clock::now();
-      const IntersectionReport report = check_intersections(*scene.sleeve().mesh, x, &arm.mesh(), &y);
+      const IntersectionReport report =
+          check_intersections(*scene.sleeve().mesh, x, &arm.mesh(), &y);
       record.checked = true;
       record.self_intersections = report.self_intersections + report.adjacent_intersections;
       record.obstacle_intersections = report.obstacle_intersections;
@@ -207,23 +214,43 @@ const std::vector<StepRecord>& Simulation::step_frame() {
   return m.records;
 }
 
-const Scene& Simulation::scene() const { return m_impl->scene; }
-const SimulationOptions& Simulation::options() const { return m_impl->options; }
-int Simulation::frame() const { return m_impl->frame; }
+const Scene& Simulation::scene() const {
+  return m_impl->scene;
+}
+const SimulationOptions& Simulation::options() const {
+  return m_impl->options;
+}
+int Simulation::frame() const {
+  return m_impl->frame;
+}
 double Simulation::time() const {
   return static_cast<double>(m_impl->step_index) * m_impl->scene.config().time_step /
          m_impl->scene.config().substeps;
 }
-const Positions& Simulation::cloth_positions() const { return m_impl->x; }
-const Positions& Simulation::cloth_velocities() const { return m_impl->v; }
-const Positions& Simulation::arm_positions() const { return m_impl->y; }
-const TriangleMesh& Simulation::cloth_mesh() const { return *m_impl->scene.sleeve().mesh; }
-const TriangleMesh& Simulation::arm_mesh() const { return m_impl->scene.arm().mesh(); }
-const ClothModel& Simulation::cloth_model() const { return m_impl->cloth; }
+const Positions& Simulation::cloth_positions() const {
+  return m_impl->x;
+}
+const Positions& Simulation::cloth_velocities() const {
+  return m_impl->v;
+}
+const Positions& Simulation::arm_positions() const {
+  return m_impl->y;
+}
+const TriangleMesh& Simulation::cloth_mesh() const {
+  return *m_impl->scene.sleeve().mesh;
+}
+const TriangleMesh& Simulation::arm_mesh() const {
+  return m_impl->scene.arm().mesh();
+}
+const ClothModel& Simulation::cloth_model() const {
+  return m_impl->cloth;
+}
 ClothEnergy Simulation::energy() const {
   return m_impl->cloth.energy(m_impl->x, m_impl->v, m_impl->scene.config().gravity);
 }
-const SimulationTotals& Simulation::totals() const { return m_impl->totals; }
+const SimulationTotals& Simulation::totals() const {
+  return m_impl->totals;
+}
 
 nlohmann::json simulation_summary(const Simulation& simulation, bool interrupted) {
   const SimulationTotals& t = simulation.totals();
@@ -248,10 +275,13 @@ nlohmann::json simulation_summary(const Simulation& simulation, bool interrupted
                       {"total", t.step_ms / steps}};
   j["frames_per_second"] = t.wall_seconds > 0 ? t.frames / t.wall_seconds : 0.0;
   j["wall_seconds"] = t.wall_seconds;
-  j["candidate_triangle_pairs"] = {{"mean", static_cast<double>(t.detection.candidate_triangle_pairs) / steps},
-                                   {"max", t.max_ctps}};
-  j["vf_tested"] = {{"mean", static_cast<double>(t.detection.vf_tested) / steps}, {"max", t.max_vf}};
-  j["ee_tested"] = {{"mean", static_cast<double>(t.detection.ee_tested) / steps}, {"max", t.max_ee}};
+  j["candidate_triangle_pairs"] = {
+      {"mean", static_cast<double>(t.detection.candidate_triangle_pairs) / steps},
+      {"max", t.max_ctps}};
+  j["vf_tested"] = {{"mean", static_cast<double>(t.detection.vf_tested) / steps},
+                    {"max", t.max_vf}};
+  j["ee_tested"] = {{"mean", static_cast<double>(t.detection.ee_tested) / steps},
+                    {"max", t.max_ee}};
   j["detection_totals"] = t.detection;
   j["detection_config"] = {{"normal_cones", d.normal_cones},
                            {"contour_test", d.contour_test},

@@ -25,7 +25,7 @@ struct SimulationOptions {
   bool check_frames = false;         ///< run it after the last substep of every frame
   bool contact = true;               ///< run the ContactSolver (off: cloth model and arm only)
   ClothSolver solver = ClothSolver::automatic;  ///< linear solver of the implicit step
-  double cg_tolerance = 1e-4;        ///< relative residual for the iterative solver
+  double cg_tolerance = 1e-4;                   ///< relative residual for the iterative solver
   /// Coulomb friction of the implicit-arm contact pass; negative: ContactParams::friction.
   /// Known trade-off (measured on the default scene): applied after the elastic solve, per
   /// vertex, friction 0.3 lets the forearm drag the sleeve until a few edges at the elbow
@@ -36,14 +36,14 @@ struct SimulationOptions {
 
 /// Everything about one substep.
 struct StepRecord {
-  int frame = 0;          ///< frame this substep belongs to (1-based)
-  int substep = 0;        ///< 0-based within the frame
-  double time = 0;        ///< simulated time at the end of the substep (s)
-  ClothStepInfo cloth;    ///< the implicit solve
+  int frame = 0;                   ///< frame this substep belongs to (1-based)
+  int substep = 0;                 ///< 0-based within the frame
+  double time = 0;                 ///< simulated time at the end of the substep (s)
+  ClothStepInfo cloth;             ///< the implicit solve
   std::int64_t arm_contacts = 0;   ///< vertices held on the implicit arm by contact springs
   std::int64_t arm_projected = 0;  ///< vertices moved out of the implicit arm afterwards
-  ContactStats contact;   ///< the contact solver (self-collisions, impulses, zones, detection)
-  bool checked = false;   ///< whether the static check ran
+  ContactStats contact;  ///< the contact solver (self-collisions, impulses, zones, detection)
+  bool checked = false;  ///< whether the static check ran
   std::int64_t self_intersections = 0;      ///< cloth-cloth (adjacent included), if checked
   std::int64_t obstacle_intersections = 0;  ///< cloth-arm, if checked
   double forces_solve_ms = 0;  ///< forces, system assembly, linear solve, arm projection
@@ -64,17 +64,17 @@ struct SimulationTotals {
   std::int64_t steps = 0;                ///< substeps completed
   std::int64_t self_collisions = 0;      ///< cloth-cloth collisions the contact solver found
   std::int64_t obstacle_collisions = 0;  ///< cloth-arm collisions the contact solver found
-  std::int64_t intersections = 0;  ///< found by the static check (must be 0)
-  std::int64_t checked_steps = 0;  ///< substeps the static check ran after
-  std::int64_t impulses = 0;       ///< CCD impulses applied
-  std::int64_t impact_zones = 0;   ///< rigid impact zones formed
-  std::int64_t last_resorts = 0;   ///< substeps the contact solver had to revert
-  std::int64_t failed_solves = 0;  ///< implicit solves that failed (velocities kept)
+  std::int64_t intersections = 0;        ///< found by the static check (must be 0)
+  std::int64_t checked_steps = 0;        ///< substeps the static check ran after
+  std::int64_t impulses = 0;             ///< CCD impulses applied
+  std::int64_t impact_zones = 0;         ///< rigid impact zones formed
+  std::int64_t last_resorts = 0;         ///< substeps the contact solver had to revert
+  std::int64_t failed_solves = 0;        ///< implicit solves that failed (velocities kept)
   std::int64_t max_ctps = 0, max_vf = 0, max_ee = 0;  ///< per step, sent to detection/CCD
-  DetectionStats detection;  ///< summed over steps
+  DetectionStats detection;                           ///< summed over steps
   /// Summed times (ms) of the parts of a substep (see StepRecord).
   double forces_solve_ms = 0, detection_ms = 0, response_ms = 0, check_ms = 0, step_ms = 0;
-  double wall_seconds = 0;   ///< wall time spent in step_frame()
+  double wall_seconds = 0;  ///< wall time spent in step_frame()
 };
 
 /// Runs a Scene frame by frame.
