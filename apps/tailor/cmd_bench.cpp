@@ -11,7 +11,7 @@
 #include "tailor/bench/paper_benchmark.hpp"
 #include "tailor/bench/scale_benchmark.hpp"
 #include "tailor/bench/svg_plot.hpp"
-#include "tailor/geometry/error.hpp"
+#include "tailor/io/file_bytes.hpp"
 #include "tailor/scene/scene.hpp"
 
 namespace tailor::cli {
@@ -65,14 +65,7 @@ int run_scale(const BenchArgs& args) {
   const std::vector<ScaleRow> rows = run_scale_benchmark(options);
   if (terminal) fmt::print(stderr, "\r{:<60}\r", "");
   std::filesystem::create_directories(args.out);
-  {
-    const std::filesystem::path csv = std::filesystem::path(args.out) / "scale.csv";
-    std::FILE* file = std::fopen((csv.string() + ".tmp").c_str(), "w");
-    if (file == nullptr) throw InputError(fmt::format("{}: cannot write", csv.string()));
-    fmt::print(file, "{}", scale_csv(rows));
-    std::fclose(file);
-    std::filesystem::rename(csv.string() + ".tmp", csv);
-  }
+  write_file_atomically(std::filesystem::path(args.out) / "scale.csv", scale_csv(rows));
   scale_plot(rows).write(std::filesystem::path(args.out) / "scale.svg");
   fmt::print(
       "| scene | threads | triangles | floor ms | refit | traversal | low level | "

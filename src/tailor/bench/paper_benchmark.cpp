@@ -2,11 +2,10 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
 #include <numeric>
 
 #include "tailor/bench/svg_plot.hpp"
-#include "tailor/geometry/error.hpp"
+#include "tailor/io/file_bytes.hpp"
 #include "tailor/sim/simulation.hpp"
 
 namespace tailor {
@@ -25,16 +24,6 @@ template <class T>
 double mean(const std::vector<T>& values) {
   if (values.empty()) return 0;
   return std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
-}
-
-void write_file(const std::filesystem::path& path, const std::string& text) {
-  const std::filesystem::path temporary = path.string() + ".tmp";
-  {
-    std::ofstream file(temporary);
-    if (!file) throw InputError(fmt::format("{}: cannot write", temporary.string()));
-    file << text;
-  }
-  std::filesystem::rename(temporary, path);
 }
 
 PlotSeries per_step(const std::string& name, const std::vector<std::int64_t>& values) {
@@ -115,10 +104,10 @@ std::string PaperBenchmark::table1_markdown() const {
 
 void PaperBenchmark::write(const std::filesystem::path& dir) const {
   std::filesystem::create_directories(dir);
-  write_file(dir / "fig1.csv", fig1_csv());
-  write_file(dir / "fig1.md", fig1_markdown());
-  write_file(dir / "table1.csv", table1_csv());
-  write_file(dir / "table1.md", table1_markdown());
+  write_file_atomically(dir / "fig1.csv", fig1_csv());
+  write_file_atomically(dir / "fig1.md", fig1_markdown());
+  write_file_atomically(dir / "table1.csv", table1_csv());
+  write_file_atomically(dir / "table1.md", table1_markdown());
   LinePlot fig1;
   fig1.title = "Candidate triangle pairs per step (elbow gesture)";
   fig1.x_label = "step";

@@ -5,10 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <limits>
 
-#include "tailor/geometry/error.hpp"
+#include "tailor/io/file_bytes.hpp"
 
 namespace tailor {
 namespace {
@@ -130,13 +129,7 @@ std::string LinePlot::to_svg() const {
 }
 
 void LinePlot::write(const std::filesystem::path& path) const {
-  const std::filesystem::path temporary = path.string() + ".tmp";
-  {
-    std::ofstream file(temporary);
-    if (!file) throw InputError(fmt::format("{}: cannot write", temporary.string()));
-    file << to_svg();
-  }
-  std::filesystem::rename(temporary, path);
+  write_file_atomically(path, to_svg());
 }
 
 }  // namespace tailor

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <system_error>
 
 #include "tailor/geometry/error.hpp"
 
@@ -58,6 +59,18 @@ void write_file_bytes(const std::filesystem::path& path, std::string_view bytes)
   }
   if (std::fclose(file.release()) != 0) {
     throw InputError(fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
+  }
+}
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
+  std::filesystem::path temporary = path;
+  temporary += ".tmp";
+  write_file_bytes(temporary, bytes);
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) {
+    throw InputError(fmt::format("cannot rename '{}' to '{}': {}", temporary.string(),
+                                 path.string(), error.message()));
   }
 }
 

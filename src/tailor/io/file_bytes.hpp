@@ -16,4 +16,8 @@ std::string read_file_bytes(const std::filesystem::path& path);
 /// file cannot be created or written.
 void write_file_bytes(const std::filesystem::path& path, std::string_view bytes);
 
+/// Writes `bytes` to `path.tmp`, then renames it over `path`, so a reader never sees
+/// half a file. Throws InputError naming the path on failure.
+void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+
 }  // namespace tailor
