@@ -10,7 +10,7 @@
 
 #include "naive_ccd.hpp"
 #include "tailor/ccd/ccd.hpp"
-#include "tailor/ccd/coplanarity_filter.hpp"
+#include "tailor/geometry/coplanarity_sign.hpp"
 #include "tailor/ccd/query_io.hpp"
 
 namespace tailor {

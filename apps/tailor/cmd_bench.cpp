@@ -8,9 +8,9 @@
 #include <filesystem>
 
 #include "command.hpp"
-#include "tailor/bench/paper_benchmark.hpp"
-#include "tailor/bench/scale_benchmark.hpp"
-#include "tailor/bench/svg_plot.hpp"
+#include "bench/paper_benchmark.hpp"
+#include "bench/scale_benchmark.hpp"
+#include "bench/svg_plot.hpp"
 #include "tailor/io/file_bytes.hpp"
 #include "tailor/scene/scene.hpp"
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "tailor/io/mesh_data.hpp"
+#include "tailor/mesh/mesh_data.hpp"
 #include "tailor/mesh/procedural_meshes.hpp"
 
 namespace tailor::testing {

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// Continuous normal cones (Tang et al., ICCD 2009; DESIGN.md §2).
+/// Continuous normal cones (Tang et al., ICCD 2009; docs/design.md §2).
 
 #include <numbers>
 

@@ -1,6 +1,6 @@
 #include "tailor/candidates/feature_assignment.hpp"
 
-#include "tailor/culling/isolated_set.hpp"
+#include "tailor/candidates/isolated_set.hpp"
 
 namespace tailor {
 

@@ -14,7 +14,7 @@ namespace tailor {
 /// has that no earlier face took), and picks for every VF and EE feature pair the one
 /// triangle pair it is tested from.
 ///
-/// Why nothing is lost together with adjacency culling (DESIGN.md §2, third trap): the
+/// Why nothing is lost together with adjacency culling (docs/design.md §2, third trap): the
 /// pair (v, g) is tested from (owner(v), g). When adjacency culling is on and owner(v)
 /// shares a vertex with g, that triangle pair is never emitted, so the representative
 /// falls back to the first face around v that shares no vertex with g (Tang's per-pair

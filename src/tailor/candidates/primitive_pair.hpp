@@ -1,15 +1,10 @@
 #pragma once
 /// @file
-/// Candidate pairs passed between the pipeline's stages.
+/// Candidate primitive pairs: the output of low-level culling and the input of the exact CCD.
 
 #include "tailor/geometry/types.hpp"
 
 namespace tailor {
-
-/// A candidate triangle pair (CTP), `first < second`.
-struct TrianglePair {
-  Index first = -1, second = -1;
-};
 
 /// A vertex-face candidate pair.
 struct VertexFacePair {

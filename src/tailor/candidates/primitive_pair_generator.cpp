@@ -3,7 +3,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
-#include "tailor/ccd/coplanarity_filter.hpp"
+#include "tailor/geometry/coplanarity_sign.hpp"
 
 namespace tailor {
 namespace {

@@ -9,8 +9,9 @@
 
 #include "tailor/bvh/aabb.hpp"
 #include "tailor/candidates/feature_assignment.hpp"
+#include "tailor/candidates/isolated_set.hpp"
 #include "tailor/candidates/primitive_pair.hpp"
-#include "tailor/culling/isolated_set.hpp"
+#include "tailor/culling/triangle_pair.hpp"
 
 namespace tailor {
 

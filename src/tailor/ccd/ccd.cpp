@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "tailor/ccd/ccd_exact.hpp"
-#include "tailor/ccd/coplanarity_filter.hpp"
+#include "tailor/geometry/coplanarity_sign.hpp"
 
 namespace tailor {
 

@@ -11,7 +11,7 @@
 
 #include "tailor/ccd/ccd_exact.hpp"
 #include "tailor/ccd/ccd_systems.hpp"
-#include "tailor/ccd/coplanarity_filter.hpp"
+#include "tailor/geometry/coplanarity_sign.hpp"
 #include "tailor/ccd/interval.hpp"
 
 namespace tailor::detail {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "tailor/bvh/mesh_bvh.hpp"
-#include "tailor/candidates/primitive_pair.hpp"
+#include "tailor/culling/triangle_pair.hpp"
 #include "tailor/culling/node_contours.hpp"
 #include "tailor/mesh/triangle_mesh.hpp"
 

@@ -7,7 +7,7 @@
 #include <map>
 #include <numeric>
 
-#include "tailor/ccd/coplanarity_filter.hpp"
+#include "tailor/geometry/coplanarity_sign.hpp"
 #include "tailor/geometry/error.hpp"
 
 namespace tailor {

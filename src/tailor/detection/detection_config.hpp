@@ -19,6 +19,9 @@ struct DetectionConfig {
   bool coplanarity_filter = true;  ///< non-coplanarity (DNF) filter
   bool radial_view = true;         ///< radial-view culling where observers are given
   int threads = 0;                 ///< 0: all hardware threads
+  /// Copy the step's candidate triangle pairs into DetectionResult (for pictures and
+  /// viewers; off by default because it costs memory at scale).
+  bool keep_candidate_pairs = false;
 
   /// `basic`, `curtis`, `tang` or `paper`; throws InputError naming the bad name.
   static DetectionConfig preset(std::string_view name);

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// Independent static check that a cloth state is intersection-free (DESIGN.md §4): every
+/// Independent static check that a cloth state is intersection-free (docs/design.md §4): every
 /// pair of cloth triangles and every cloth-obstacle triangle pair, with the exact
 /// triangle-triangle test, accelerated by a BVH over the triangles' boxes.
 

@@ -8,7 +8,7 @@
 #include "tailor/bvh/mesh_bvh.hpp"
 #include "tailor/candidates/primitive_pair_generator.hpp"
 #include "tailor/culling/bvh_traversal.hpp"
-#include "tailor/culling/isolated_set.hpp"
+#include "tailor/candidates/isolated_set.hpp"
 #include "tailor/culling/node_contours.hpp"
 #include "tailor/culling/radial_view.hpp"
 #include "tailor/detection/exact_pair_tests.hpp"
@@ -111,6 +111,7 @@ struct SelfCollisionDetector::Impl {
       stats.contour_tests = traversal.contour_tests;
       stats.contour_tests_failed = traversal.contour_tests_failed;
       stats.candidate_triangle_pairs = static_cast<std::int64_t>(ctps.size());
+      if (config.keep_candidate_pairs) result.candidate_triangle_pairs = ctps;
       stats.isolated_vf_pairs = static_cast<std::int64_t>(isolated.vertex_face.size());
       stats.isolated_ee_pairs = static_cast<std::int64_t>(isolated.edge_edge.size());
 

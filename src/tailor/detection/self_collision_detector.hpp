@@ -1,12 +1,14 @@
 #pragma once
 /// @file
-/// The self-collision pipeline of one time step (DESIGN.md §1): refit, high-level
+/// The self-collision pipeline of one time step (docs/design.md §1): refit, high-level
 /// culling, low-level culling, exact CCD.
 
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "tailor/culling/triangle_pair.hpp"
 #include "tailor/detection/collision.hpp"
 #include "tailor/detection/detection_config.hpp"
 #include "tailor/detection/detection_stats.hpp"
@@ -18,6 +20,8 @@ namespace tailor {
 struct DetectionResult {
   CollisionSet collisions;
   DetectionStats stats;
+  /// The candidate triangle pairs of the step (only with DetectionConfig::keep_candidate_pairs).
+  std::vector<TrianglePair> candidate_triangle_pairs;
 };
 
 /// Finds every self-collision of a deforming mesh over one linear step.

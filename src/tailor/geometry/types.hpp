@@ -14,7 +14,7 @@ using Index = std::int32_t;
 /// A 3D point or vector.
 using Vec3 = Eigen::Vector3d;
 
-/// Vertex positions, one row per vertex (DESIGN.md §6).
+/// Vertex positions, one row per vertex (docs/design.md §6).
 using Positions = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
 /// Triangle faces, one row of three vertex indices per face.

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "tailor/geometry/types.hpp"
-#include "tailor/io/mesh_data.hpp"
+#include "tailor/mesh/mesh_data.hpp"
 
 namespace tailor {
 

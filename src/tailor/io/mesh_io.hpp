@@ -5,9 +5,9 @@
 #include <filesystem>
 
 #include "tailor/geometry/types.hpp"
-#include "tailor/io/mesh_data.hpp"
 #include "tailor/io/obj_io.hpp"
 #include "tailor/io/ply_io.hpp"
+#include "tailor/mesh/mesh_data.hpp"
 
 namespace tailor {
 

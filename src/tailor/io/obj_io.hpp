@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "tailor/geometry/types.hpp"
-#include "tailor/io/mesh_data.hpp"
+#include "tailor/mesh/mesh_data.hpp"
 
 namespace tailor {
 

@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "tailor/geometry/types.hpp"
-#include "tailor/io/mesh_data.hpp"
+#include "tailor/mesh/mesh_data.hpp"
 
 namespace tailor {
 

@@ -2,7 +2,7 @@
 /// @file
 /// Procedural meshes for tests and benchmarks: grids, tubes, spheres, a crumpling cloth.
 
-#include "tailor/io/mesh_data.hpp"
+#include "tailor/mesh/mesh_data.hpp"
 
 namespace tailor {
 

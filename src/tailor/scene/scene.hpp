@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// The arm-sleeve scene (DESIGN.md §4): its settings, read from JSON, and the built
+/// The arm-sleeve scene (docs/design.md §4): its settings, read from JSON, and the built
 /// arm, gesture and sleeve.
 ///
 /// Scene file (every field optional; unknown fields are errors):
@@ -27,10 +27,10 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "tailor/scene/arm.hpp"
+#include "tailor/scene/cloth_material.hpp"
+#include "tailor/scene/contact_params.hpp"
 #include "tailor/scene/gesture.hpp"
 #include "tailor/scene/sleeve.hpp"
-#include "tailor/sim/cloth_model.hpp"
-#include "tailor/sim/contact_solver.hpp"
 
 namespace tailor {
 

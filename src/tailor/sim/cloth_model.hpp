@@ -14,18 +14,9 @@
 
 #include "tailor/geometry/types.hpp"
 #include "tailor/mesh/triangle_mesh.hpp"
+#include "tailor/scene/cloth_material.hpp"
 
 namespace tailor {
-
-/// Material of the cloth (SI units).
-struct ClothMaterial {
-  double density = 0.15;            ///< area density (kg/m²)
-  double stretch_stiffness = 500;   ///< warp/weft stretch stiffness (N/m)
-  double shear_stiffness = 50;      ///< in-plane shear stiffness (N/m)
-  double bending_stiffness = 1e-5;  ///< bending stiffness (N·m)
-  double stiffness_damping = 2e-3;  ///< Rayleigh damping proportional to stiffness (s)
-  double air_damping = 0.2;         ///< Rayleigh damping proportional to mass (1/s)
-};
 
 /// Energies of a state (J).
 struct ClothEnergy {

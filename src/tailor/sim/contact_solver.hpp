@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// Intersection-free contact handling for one cloth substep (DESIGN.md §4): proximity
+/// Intersection-free contact handling for one cloth substep (docs/design.md §4): proximity
 /// repulsion, CCD impulses iterated (Bridson, Fedkiw & Anderson 2002), rigid impact
 /// zones as the fail-safe (Provot 1997; Harmon et al. 2008), against the cloth itself
 /// and a moving kinematic obstacle (the arm).
@@ -11,6 +11,7 @@
 #include "tailor/detection/detection_config.hpp"
 #include "tailor/detection/detection_stats.hpp"
 #include "tailor/mesh/triangle_mesh.hpp"
+#include "tailor/scene/contact_params.hpp"
 
 namespace tailor {
 
@@ -18,14 +19,6 @@ namespace tailor {
 struct KinematicObstacle {
   const TriangleMesh* mesh = nullptr;
   Positions x0, x1;
-};
-
-/// Contact parameters (SI units: metres, seconds).
-struct ContactParams {
-  double thickness = 1e-3;          ///< repulsion distance between cloth and cloth / arm
-  double friction = 0.3;            ///< Coulomb friction coefficient
-  int max_impulse_iterations = 20;  ///< CCD impulse passes before impact zones
-  int max_zone_iterations = 100;    ///< impact-zone passes before the last resort
 };
 
 /// What one call to ContactSolver::resolve did.

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// The arm-sleeve simulation driver (DESIGN.md §4). Per substep: forces and implicit
+/// The arm-sleeve simulation driver (docs/design.md §4). Per substep: forces and implicit
 /// solve -> candidate x1 -> projection out of the implicit arm -> ContactSolver::resolve
 /// (cloth-cloth and cloth-arm mesh) -> v = (x1 - x0) / h -> optional static
 /// intersection check.

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "tailor/bench/svg_plot.hpp"
+#include "bench/svg_plot.hpp"
 #include "tailor/geometry/types.hpp"
 
 namespace tailor {

@@ -1,4 +1,4 @@
-#include "tailor/culling/isolated_set.hpp"
+#include "tailor/candidates/isolated_set.hpp"
 
 #include <tbb/parallel_for.h>
 

@@ -1,10 +1,10 @@
-#include "tailor/bench/paper_benchmark.hpp"
+#include "bench/paper_benchmark.hpp"
 
 #include <fmt/format.h>
 
 #include <numeric>
 
-#include "tailor/bench/svg_plot.hpp"
+#include "bench/svg_plot.hpp"
 #include "tailor/io/file_bytes.hpp"
 #include "tailor/sim/simulation.hpp"
 

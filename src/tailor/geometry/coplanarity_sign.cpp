@@ -1,4 +1,4 @@
-#include "tailor/ccd/coplanarity_filter.hpp"
+#include "tailor/geometry/coplanarity_sign.hpp"
 
 #include <gmpxx.h>
 

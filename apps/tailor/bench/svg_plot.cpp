@@ -1,4 +1,4 @@
-#include "tailor/bench/svg_plot.hpp"
+#include "bench/svg_plot.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-/// coplanarity_sign against an exact evaluation of the DESIGN.md §3 formula (A, (2C+F)/3,
+/// coplanarity_sign against an exact evaluation of the docs/design.md §3 formula (A, (2C+F)/3,
 /// (2D+E)/3, B with n0, n1, nX) on random, near-degenerate and extreme-scale inputs.
 
 #include <gtest/gtest.h>
@@ -7,8 +7,8 @@
 #include <limits>
 #include <random>
 
-#include "ccd_test_support.hpp"
-#include "tailor/ccd/coplanarity_filter.hpp"
+#include "ccd/ccd_test_support.hpp"
+#include "tailor/geometry/coplanarity_sign.hpp"
 
 namespace tailor {
 namespace {
@@ -19,7 +19,7 @@ Q3 q3(const Vec3& v) {
   return {mpq_class(v[0]), mpq_class(v[1]), mpq_class(v[2])};
 }
 
-/// The DESIGN.md formula, exactly.
+/// The docs/design.md formula, exactly.
 StepSign reference_sign(const std::array<Vec3, 8>& x) {
   const Q3 a0 = q3(x[0]), b0 = q3(x[1]), c0 = q3(x[2]), d0 = q3(x[3]);
   const Q3 a1 = q3(x[4]), b1 = q3(x[5]), c1 = q3(x[6]), d1 = q3(x[7]);

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// The non-coplanarity (DNF) filter of Tang, Manocha & Tong 2010 (DESIGN.md §3), with a
+/// The non-coplanarity (DNF) filter of Tang, Manocha & Tong 2010 (docs/design.md §3), with a
 /// certified floating-point error bound and an exact fallback: no epsilon.
 ///
 /// The coplanarity function f(t) = det(b-a, c-a, d-a)(t) is trilinear in the three
@@ -9,7 +9,7 @@
 ///   β0 = det(u0,v0,w0),  β3 = det(u1,v1,w1),
 ///   3β1 = det(u1,v0,w0) + det(u0,v1,w0) + det(u0,v0,w1),
 ///   3β2 = det(u0,v1,w1) + det(u1,v0,w1) + det(u1,v1,w0)
-/// (equal to A, (2C+F)/3, (2D+E)/3, B of DESIGN.md §3). Each is evaluated in double with
+/// (equal to A, (2C+F)/3, (2D+E)/3, B of docs/design.md §3). Each is evaluated in double with
 /// the forward error bound 16·2^-53·(the same expression on absolute values), valid when
 /// every nonzero difference lies in [2^-250, 2^250] (no overflow or underflow); otherwise,
 /// or when the bound cannot decide a sign, that sign is computed exactly (GMP).

@@ -1,4 +1,4 @@
-#include "tailor/bench/scale_benchmark.hpp"
+#include "bench/scale_benchmark.hpp"
 
 #include <fmt/format.h>
 #include <tbb/task_arena.h>
