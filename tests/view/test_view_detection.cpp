@@ -63,13 +63,25 @@ TEST(ViewDetection, ShowsTheCollisionsOfTailorDetectAndItsCandidates) {
   ASSERT_FALSE(truth.vertex_face.empty());
   const nlohmann::json frame = test::data_script_json(dir / "view/data/frame_0001.js");
   const auto& contacts = frame["contacts"];
-  ASSERT_EQ(contacts["vertex_face"].size(), truth.vertex_face.size());
+  const std::vector<std::uint32_t> vf = test::decode_uint32(contacts["vertex_face"]);
+  const std::vector<float> vf_toi = test::decode_float32(contacts["vertex_face_toi"]);
+  ASSERT_EQ(vf.size(), 3 * truth.vertex_face.size());
+  ASSERT_EQ(vf_toi.size(), truth.vertex_face.size());
   for (std::size_t i = 0; i < truth.vertex_face.size(); ++i) {
-    EXPECT_EQ(contacts["vertex_face"][i][0], truth.vertex_face[i].vertex);
-    EXPECT_EQ(contacts["vertex_face"][i][1], truth.vertex_face[i].face);
-    EXPECT_EQ(contacts["vertex_face"][i][2], 0);  // one substep
+    EXPECT_EQ(vf[3 * i], static_cast<std::uint32_t>(truth.vertex_face[i].vertex));
+    EXPECT_EQ(vf[3 * i + 1], static_cast<std::uint32_t>(truth.vertex_face[i].face));
+    EXPECT_EQ(vf[3 * i + 2], 0u);  // one substep
+    EXPECT_EQ(vf_toi[i], static_cast<float>(truth.vertex_face[i].toi));
   }
-  EXPECT_EQ(contacts["edge_edge"].size(), truth.edge_edge.size());
+  const std::vector<std::uint32_t> ee = test::decode_uint32(contacts["edge_edge"]);
+  ASSERT_EQ(ee.size(), 5 * truth.edge_edge.size());
+  for (std::size_t i = 0; i < truth.edge_edge.size(); ++i) {
+    const auto& c = truth.edge_edge[i];
+    EXPECT_EQ(std::vector<std::uint32_t>(ee.begin() + 5 * i, ee.begin() + 5 * i + 5),
+              (std::vector<std::uint32_t>{
+                  static_cast<std::uint32_t>(c.a0), static_cast<std::uint32_t>(c.a1),
+                  static_cast<std::uint32_t>(c.b0), static_cast<std::uint32_t>(c.b1), 0u}));
+  }
   EXPECT_EQ(contacts["substeps"], 1);
   // Every face touched by a collision is in some candidate pair (culling drops none).
   const std::vector<std::uint32_t> candidates = test::decode_uint32(contacts["candidates"]);

@@ -81,8 +81,13 @@ TEST(ViewSimulation, WritesPageAndDataThatDecodeToTheInput) {
   const nlohmann::json frame2 = test::data_script_json(view / "data/frame_0002.js");
   const auto& contacts = frame2["contacts"];
   EXPECT_EQ(test::decode_uint32(contacts["candidates"]), (std::vector<std::uint32_t>{0, 1}));
-  EXPECT_EQ(contacts["vertex_face"], (nlohmann::json{{3, 0, 1, 0.25}}));
-  EXPECT_EQ(contacts["edge_edge"], (nlohmann::json{{0, 1, 2, 3, 0, 0.5}}));
+  EXPECT_EQ(contacts["vertex_face_count"], 1);
+  EXPECT_EQ(test::decode_uint32(contacts["vertex_face"]), (std::vector<std::uint32_t>{3, 0, 1}));
+  EXPECT_EQ(test::decode_float32(contacts["vertex_face_toi"]), (std::vector<float>{0.25f}));
+  EXPECT_EQ(contacts["edge_edge_count"], 1);
+  EXPECT_EQ(test::decode_uint32(contacts["edge_edge"]),
+            (std::vector<std::uint32_t>{0, 1, 2, 3, 0}));
+  EXPECT_EQ(test::decode_float32(contacts["edge_edge_toi"]), (std::vector<float>{0.5f}));
   EXPECT_EQ(contacts["observers"], (nlohmann::json{{0.5, 0.5, 2.0}}));
   EXPECT_EQ(contacts["substeps"], 2);
   const nlohmann::json frame1 = test::data_script_json(view / "data/frame_0001.js");

@@ -99,7 +99,15 @@ export class FrameStore {
       contacts: null,
     };
     if (raw.contacts) {
-      frame.contacts = { ...raw.contacts, candidates: uint32(raw.contacts.candidates) };
+      const c = raw.contacts;
+      frame.contacts = {
+        ...c,
+        candidates: uint32(c.candidates),
+        vertex_face: uint32(c.vertex_face), // (vertex, face, substep) per pair
+        vertex_face_toi: float32(c.vertex_face_toi),
+        edge_edge: uint32(c.edge_edge), // (a0, a1, b0, b1, substep) per pair
+        edge_edge_toi: float32(c.edge_edge_toi),
+      };
     }
     this.bytes.set(k, frame.cloth.byteLength + (frame.arm ? frame.arm.byteLength : 0));
     this.evict(k);

@@ -75,8 +75,8 @@ function contactsSummary(frame, scene) {
   if (!c) {
     return frame.index === 0 ? 'initial state (no step ends here)' : 'no contact data for this frame';
   }
-  return `${c.candidate_count} candidate triangles, ${c.vertex_face.length} VF and ` +
-    `${c.edge_edge.length} EE collisions` +
+  return `${c.candidate_count} candidate triangles, ${c.vertex_face_count} VF and ` +
+    `${c.edge_edge_count} EE collisions` +
     (scene.kind === 'simulation'
       ? ` in ${c.substeps} substeps, ${c.observers.length} observer${c.observers.length === 1 ? '' : 's'}`
       : '');
@@ -155,6 +155,7 @@ async function main() {
   showMessage('', '');
 
   Object.assign(api, {
+    renderer: { name: view.rendererName, antialias: view.antialias },
     scene: { kind: scene.kind, frames: scene.frames, title: scene.title,
       clothFaces: scene.cloth.faces, hasArm: !!scene.arm,
       hasContacts: scene.has_contacts, hasClusters: !!scene.clusters },
@@ -172,7 +173,7 @@ async function main() {
     pixelCounts: () => classifyPixels(view.readPixels()),
     /** A cheap fingerprint of the picture, to see that it changed. */
     picture: () => view.readPixels(),
-    /** Median ms of `renders` renders while orbiting, and the fps of an rAF-paced orbit. */
+    /** Mean ms of `renders` back-to-back renders while orbiting, and the fps of an rAF-paced orbit. */
     benchmark: async (renders = 30, seconds = 3) => {
       const renderMs = view.timeRenders(renders);
       let count = 0;

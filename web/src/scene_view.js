@@ -21,6 +21,17 @@ function clusterColor(id) {
   return new THREE.Color().setHSL((id * 0.618034) % 1, 0.65, 0.55);
 }
 
+// The WebGL renderer's name, from a scratch context (its antialias flag is fixed at creation).
+function webglRendererName() {
+  const gl = document.createElement('canvas').getContext('webgl2');
+  if (!gl) return '';
+  const info = gl.getExtension('WEBGL_debug_renderer_info');
+  const name = String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
+  const lose = gl.getExtension('WEBGL_lose_context');
+  if (lose) lose.loseContext();
+  return name;
+}
+
 // A geometry whose buffers grow as needed (contacts differ from frame to frame).
 class GrowingGeometry {
   constructor(object, itemSize = 3) {
@@ -52,7 +63,13 @@ function overlayMaterial(Material, color, extra = {}) {
 export class SceneView {
   constructor(canvas, scene) {
     this.scene = scene;
-    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: true });
+    // Multisampling costs a CPU renderer (SwiftShader) ~3x per frame and a GPU little: on
+    // unless the renderer is a software one; ?antialias=0 or =1 in the address decides.
+    this.rendererName = webglRendererName();
+    const choice = new URLSearchParams(window.location.search).get('antialias');
+    this.antialias = choice === null ? !/swiftshader|llvmpipe|software/i.test(this.rendererName)
+      : choice !== '0';
+    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: this.antialias });
     this.renderer.setPixelRatio(window.devicePixelRatio || 1);
     this.world = new THREE.Scene();
     this.world.background = new THREE.Color(COLORS.background);
@@ -148,23 +165,30 @@ export class SceneView {
     candidateIndex.needsUpdate = true;
     this.candidates.geometry.setDrawRange(0, 3 * ids.length);
 
+    // Contact time u in [0, 1] across the frame: substep s of S, time of impact t in it.
     const x1 = frame.cloth, x0 = previous ? previous.cloth : null;
-    const faceVertices = [], edgeVertices = [], points = [];
-    for (const [vertex, face, substep, toi] of contacts ? contacts.vertex_face : []) {
-      const u = (substep + toi) / contacts.substeps;
-      for (let c = 0; c < 3; ++c) faceVertices.push(...interpolated(x0, x1, faces[3 * face + c], u));
-      points.push(...interpolated(x0, x1, vertex, u));
+    const vfCount = contacts ? contacts.vertex_face_count : 0;
+    const eeCount = contacts ? contacts.edge_edge_count : 0;
+    const faceVertices = new Float32Array(9 * vfCount), edgeVertices = new Float32Array(12 * eeCount);
+    const points = new Float32Array(3 * (vfCount + eeCount));
+    const p = [0, 0, 0];
+    for (let i = 0; i < vfCount; ++i) {
+      const vf = contacts.vertex_face, face = vf[3 * i + 1];
+      const u = (vf[3 * i + 2] + contacts.vertex_face_toi[i]) / contacts.substeps;
+      for (let c = 0; c < 3; ++c) faceVertices.set(interpolated(x0, x1, faces[3 * face + c], u, p), 9 * i + 3 * c);
+      points.set(interpolated(x0, x1, vf[3 * i], u, p), 3 * i);
     }
-    for (const [a0, a1, b0, b1, substep, toi] of contacts ? contacts.edge_edge : []) {
-      const u = (substep + toi) / contacts.substeps;
-      const ends = [a0, a1, b0, b1].map((v) => interpolated(x0, x1, v, u));
-      for (const end of ends) edgeVertices.push(...end);
-      points.push(...segmentContactPoint(...ends));
+    for (let i = 0; i < eeCount; ++i) {
+      const ee = contacts.edge_edge;
+      const u = (ee[5 * i + 4] + contacts.edge_edge_toi[i]) / contacts.substeps;
+      const ends = [0, 1, 2, 3].map((j) => interpolated(x0, x1, ee[5 * i + j], u));
+      ends.forEach((end, j) => edgeVertices.set(end, 12 * i + 3 * j));
+      points.set(segmentContactPoint(...ends), 3 * (vfCount + i));
     }
     this.collidingFaces.set(faceVertices);
     this.collidingEdges.set(edgeVertices);
     this.contactPoints.set(points);
-    this.observers.set(contacts ? contacts.observers.flat() : []);
+    this.observers.set(new Float32Array(contacts ? contacts.observers.flat() : []));
     this.applyVisibility();
     this.requestRender();
   }
@@ -261,22 +285,20 @@ export class SceneView {
   }
 
   /**
-   * Median time of one render of the current view, orbiting a little between renders,
-   * each completed by a one-pixel read-back (which waits for the GPU).
+   * Mean time of one render of the current view over `count` renders while orbiting,
+   * finished by a one-pixel read-back (which waits until the GPU has drawn them all).
    */
   timeRenders(count) {
     const gl = this.renderer.getContext();
     const pixel = new Uint8Array(4);
-    const times = [];
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel); // start from an idle GPU
+    const start = performance.now();
     for (let i = 0; i < count; ++i) {
       this.camera.position.applyAxisAngle(this.camera.up, 0.02);
       this.camera.lookAt(this.controls.target);
-      const start = performance.now();
       this.renderer.render(this.world, this.camera);
-      gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
-      times.push(performance.now() - start);
     }
-    times.sort((a, b) => a - b);
-    return times[Math.floor(times.length / 2)];
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    return (performance.now() - start) / count;
   }
 }

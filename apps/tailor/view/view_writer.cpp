@@ -10,6 +10,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <vector>
 
 #include "tailor/geometry/error.hpp"
 #include "tailor/io/file_bytes.hpp"
@@ -53,19 +54,39 @@ std::string faces_base64(const FaceArray& faces) {
   return base64_encode(uint32_bytes(faces.data(), static_cast<std::size_t>(faces.size())));
 }
 
+std::string float32_base64(const std::vector<float>& values) {
+  std::string bytes;
+  bytes.reserve(values.size() * 4);
+  for (float value : values) append_le32(bytes, std::bit_cast<std::uint32_t>(value));
+  return base64_encode(bytes);
+}
+
+// Contacts as typed arrays: millions of pairs (a 1M-triangle folded cloth has ~1.1M) stay
+// compact and decode without a JSON parse of every number.
 nlohmann::json contacts_json(const FrameContacts& contacts) {
-  nlohmann::json vf = nlohmann::json::array(), ee = nlohmann::json::array(),
-                 observers = nlohmann::json::array();
-  for (const auto& c : contacts.vertex_face) vf.push_back({c.vertex, c.face, c.substep, c.toi});
-  for (const auto& c : contacts.edge_edge) {
-    ee.push_back({c.a0, c.a1, c.b0, c.b1, c.substep, c.toi});
+  std::vector<Index> vf_ids, ee_ids;
+  std::vector<float> vf_toi, ee_toi;
+  for (const auto& c : contacts.vertex_face) {
+    vf_ids.insert(vf_ids.end(), {c.vertex, c.face, c.substep});
+    vf_toi.push_back(static_cast<float>(c.toi));
   }
+  for (const auto& c : contacts.edge_edge) {
+    ee_ids.insert(ee_ids.end(), {c.a0, c.a1, c.b0, c.b1, c.substep});
+    ee_toi.push_back(static_cast<float>(c.toi));
+  }
+  nlohmann::json observers = nlohmann::json::array();
   for (const Vec3& o : contacts.observers) observers.push_back({o.x(), o.y(), o.z()});
-  return {{"candidates", base64_encode(uint32_bytes(contacts.candidate_triangles.data(),
-                                                    contacts.candidate_triangles.size()))},
+  const auto ids = [](const std::vector<Index>& v) {
+    return base64_encode(uint32_bytes(v.data(), v.size()));
+  };
+  return {{"candidates", ids(contacts.candidate_triangles)},
           {"candidate_count", contacts.candidate_triangles.size()},
-          {"vertex_face", vf},
-          {"edge_edge", ee},
+          {"vertex_face", ids(vf_ids)},
+          {"vertex_face_toi", float32_base64(vf_toi)},
+          {"vertex_face_count", contacts.vertex_face.size()},
+          {"edge_edge", ids(ee_ids)},
+          {"edge_edge_toi", float32_base64(ee_toi)},
+          {"edge_edge_count", contacts.edge_edge.size()},
           {"observers", observers},
           {"substeps", contacts.substeps}};
 }

@@ -2,8 +2,8 @@
 /// @file
 /// Writes the folder `tailor view` produces: `index.html` and `viewer.js` (the page, with
 /// three.js bundled in), `data/scene.js` (faces once, clusters, per-frame statistics) and
-/// `data/frame_NNNN.js` (one frame's positions as little-endian Float32 arrays in base64,
-/// and its contacts). Every data file is a classic script calling `tailorViewData.scene`
+/// `data/frame_NNNN.js` (one frame's positions, and its contacts, as little-endian
+/// Float32 / Uint32 arrays in base64; the layout is in docs/viewer.md). Every data file is a classic script calling `tailorViewData.scene`
 /// or `tailorViewData.frame`, so the page loads it with a <script> tag both from file://
 /// (where Chromium allows no fetch of local files) and over HTTP.
 
