@@ -127,6 +127,19 @@ async function simulationChecks(browser) {
   const moved = changedPixels(before, await picture(page));
   check(moved > 500, 'moving the slider changes the picture (overlays off)', `${moved} pixels changed`);
 
+  // Play from frame 0 for a moment, then pause.
+  await setFrame(page, 0);
+  await page.click('#play');
+  await page.waitForFunction(() => window.tailorViewer.frame() >= 2, { timeout: 30_000 })
+    .catch(() => {});
+  await page.click('#play');
+  const played = await page.evaluate(() => window.tailorViewer.frame());
+  check(played >= 2, 'play advances the frames', `reached frame ${played}`);
+  await new Promise((done) => setTimeout(done, 400));
+  const paused = await page.evaluate(() => window.tailorViewer.frame());
+  check(paused === played || paused === (played + 1) % scene.frames, 'pause stops it',
+    `frame ${played}, 400 ms later ${paused}`);
+
   if (expectRed) {
     await show(page, 'candidates', true);
     let best = { frame: -1, red: 0 };
