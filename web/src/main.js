@@ -7,7 +7,7 @@ import { StatsPanel } from './stats_panel.js';
 import { classifyPixels } from './pixel_classes.js';
 
 const $ = (id) => document.getElementById(id);
-const api = (window.tailorViewer = { ready: false, error: null, timing: {} });
+const api = (window.tailorViewer = { ready: false, error: null, timing: {}, framesShown: 0 });
 
 function showMessage(text, kind) {
   const box = $('message');
@@ -114,6 +114,7 @@ async function main() {
     stats.show(k);
     $('contacts-summary').textContent = contactsSummary(frame, scene);
     shown = k;
+    ++api.framesShown;
     api.timing.lastFrameMs = performance.now() - start;
     for (const resolve of waiting.get(k) || []) resolve();
     waiting.delete(k);
