@@ -10,7 +10,7 @@
 //
 // node tests/view/browser_test.mjs --tailor build/release/tailor --work DIR
 //   [--sim DIR]           use this `tailor simulate` output instead of running one
-//   [--frames N]          frames to simulate (default 8)
+//   [--frames N]          frames to simulate (default 8; 4 with TAILOR_SANITIZED=1)
 //   [--no-fixture]        never write the contact fixture (test the run's own contact files)
 //   [--expect-red]        fail unless some frame shows red candidate triangles (on by
 //                         default when the output has contact files)
@@ -33,6 +33,8 @@ const option = (name, fallback) => {
 const tailor = resolve(option('--tailor', 'build/release/tailor'));
 const work = resolve(option('--work', 'build/view-browser-test'));
 const started = Date.now();
+// Under the sanitizers (TAILOR_SANITIZED=1) tailor runs several times slower: smaller runs.
+const sanitized = process.env.TAILOR_SANITIZED === '1';
 
 const chromium = findChromium();
 const puppeteer = await loadPuppeteer();
@@ -93,7 +95,7 @@ async function simulationChecks(browser) {
   let sim = option('--sim', null);
   if (!sim) {
     sim = join(work, 'sim');
-    run(['simulate', '--frames', option('--frames', '8'), '--out', sim]);
+    run(['simulate', '--frames', option('--frames', sanitized ? '4' : '8'), '--out', sim]);
   }
   sim = resolve(sim);
   if (!flag('--no-fixture') && !existsSync(join(sim, 'contacts_0001.json'))) {
@@ -201,7 +203,7 @@ async function simulationChecks(browser) {
 
 async function detectionChecks(browser) {
   const step = join(work, 'step');
-  run(['generate', 'folded-cloth', '--triangles', '4000', '--out', step]);
+  run(['generate', 'folded-cloth', '--triangles', sanitized ? '2000' : '4000', '--out', step]);
   const t0 = join(step, 't0.ply'), t1 = join(step, 't1.ply'), json = join(step, 'detect.json');
   run(['detect', t0, t1, '--json', json]);
   const { page, errors } = await openViewer(browser, pageUrl(run(['view', '--detect', json, t0, t1])));
