@@ -2,10 +2,14 @@
 # Installs the Debian packages tailor builds with. Idempotent; silent when all are present.
 set -euo pipefail
 
+# The viewer's node packages (web/package-lock.json); needs no root.
+"$(dirname "$0")/install-web-deps.sh"
+
 packages=(
   g++ cmake make pkg-config
   libeigen3-dev libtbb-dev libfmt-dev libspdlog-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev
+  chromium  # the headless browser of tailor view's browser test (tests/view)
 )
 
 missing=()
