@@ -42,6 +42,7 @@ struct SimulateOptions {
   std::string out = "out/sleeve";
   int rings = 0, segments = 0;
   bool check_every_step = false;
+  bool contacts = true;
   int threads = 0;
 };
 
@@ -105,6 +106,7 @@ int run_simulate(const SimulateOptions& o) {
   options.detection.threads = o.threads;
   options.check_intersections = o.check_every_step;
   options.check_frames = true;  // cheap at the default size; every substep on request
+  options.record_contacts = o.contacts;
 
   std::optional<tbb::global_control> parallelism;
   if (o.threads > 0) {
@@ -117,6 +119,10 @@ int run_simulate(const SimulateOptions& o) {
   const auto& cloth_faces = sim.cloth_mesh().faces();
   const auto& arm_faces = sim.arm_mesh().faces();
   writer.write_frame(0, sim.cloth_positions(), cloth_faces, sim.arm_positions(), arm_faces);
+  if (o.contacts) {
+    const std::vector<Index> clusters = sim.cluster_of_face();
+    if (!clusters.empty()) writer.write_clusters(clusters);
+  }
   spdlog::info(
       "simulating '{}' ({} frames, {} substeps, sleeve {}×{} = {} vertices, method {}) into {}",
       config.gesture.name, config.frames, config.substeps, config.sleeve.rings,
@@ -129,6 +135,7 @@ int run_simulate(const SimulateOptions& o) {
     writer.write_frame(sim.frame(), sim.cloth_positions(), cloth_faces, sim.arm_positions(),
                        arm_faces);
     writer.append_steps(records);
+    if (o.contacts) writer.write_contacts(sim.frame(), records, sim.observer_positions());
     if (tty) {
       const auto& t = sim.totals();
       print_progress(sim.frame(), config.frames,
@@ -172,6 +179,8 @@ const CommandRegistration registration{
       cmd->add_flag(
           "--check-intersections", o->check_every_step,
           "Run the static intersection check after every substep (default: after every frame)");
+      cmd->add_flag("!--no-contacts", o->contacts,
+                    "Do not write the per-frame contact files (contacts_NNNN.json, clusters.json)");
       cmd->add_option("--threads", o->threads, "Worker threads (0: all)")
           ->check(CLI::NonNegativeNumber);
       return [o] { return run_simulate(*o); };

@@ -474,15 +474,25 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0,
   }
 
   // Contact springs: A += h² k n nᵀ, b += h (f0 - h k n (n·v0)), f0 = -k n (n·(x0 - q)).
+  // Friction (see ContactPlane): f = -c T (v0 + dv - w), c = μλ / max(s, kStickSpeed), so
+  // A += h c T and b -= h c T (v0 - w).
   for (const ContactPlane& c : contacts) {
     const Index i = c.vertex;
     if (i < 0 || i >= m.nv || m.is_pinned[static_cast<std::size_t>(i)] != 0) continue;
     const Vec3 xi = row3(x0, i), vi = row3(v0, i);
-    const Vec3 rhs =
+    Vec3 rhs =
         h * (-c.stiffness * c.normal.dot(xi - c.point) - h * c.stiffness * c.normal.dot(vi)) *
         c.normal;
+    Mat3 block = (h * h * c.stiffness) * c.normal * c.normal.transpose();
+    const double damping =
+        c.friction * c.normal_force / std::max(c.slip_speed, ContactPlane::kStickSpeed);
+    if (damping > 0) {
+      const Mat3 tangent = Mat3::Identity() - c.normal * c.normal.transpose();
+      rhs -= h * damping * (tangent * (vi - c.velocity));
+      block += h * damping * tangent;
+    }
     for (int a = 0; a < 3; ++a) b[3 * i + a] += rhs[a];
-    m.add_block(values, i, i, (h * h * c.stiffness) * c.normal * c.normal.transpose());
+    m.add_block(values, i, i, block);
   }
 
   // Pinned vertices: known velocity change, eliminated symmetrically.

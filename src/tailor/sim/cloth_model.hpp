@@ -29,11 +29,36 @@ struct ClothEnergy {
 /// holds `vertex` on the plane through `point` with unit `normal`, so the solve knows the
 /// vertex cannot move into the obstacle (Baraff & Witkin 1998 constrain such vertices
 /// too; a spring keeps the system a plain SPD solve).
+///
+/// Coulomb friction acts inside the same implicit solve, with the normal force and the
+/// slip speed lagged by one step (as IPC lags them, Li et al. 2020 §5): the tangential
+/// force is `-μ λ T (v1 - w) / max(s, kStickSpeed)` with `T` the tangent projector, `w`
+/// the obstacle's velocity, `λ` = `normal_force` and `s` = `slip_speed`. At a fixed point
+/// (s the actual slip) its magnitude is exactly μλ while sliding faster than
+/// kStickSpeed and below μλ while sticking: Coulomb's law, with sticking resolved to a
+/// creep of at most kStickSpeed.
 struct ContactPlane {
+  /// Slip speed (m/s) below which a contact counts as sticking.
+  static constexpr double kStickSpeed = 1e-3;
   Index vertex = -1;
   Vec3 normal = Vec3::UnitY();
   Vec3 point = Vec3::Zero();
-  double stiffness = 0;  ///< N/m
+  double stiffness = 0;          ///< N/m
+  double friction = 0;           ///< Coulomb coefficient μ
+  double normal_force = 0;       ///< lagged normal force λ (N)
+  double slip_speed = 0;         ///< lagged tangential slip speed (m/s)
+  Vec3 velocity = Vec3::Zero();  ///< obstacle velocity at the contact (m/s)
+
+  /// The spring's push (N, ≥ 0) on a vertex at `x`: the contact's normal force there.
+  double force_at(const Vec3& x) const {
+    const double s = normal.dot(x - point);
+    return s < 0 ? -stiffness * s : 0.0;
+  }
+  /// Tangential speed of a vertex moving at `v` relative to the obstacle.
+  double tangential_speed(const Vec3& v) const {
+    const Vec3 r = v - velocity;
+    return (r - r.dot(normal) * normal).norm();
+  }
 };
 
 /// Linear solver of the implicit step.

@@ -221,6 +221,7 @@ struct ContactSolver::Impl {
   const KinematicObstacle* arm = nullptr;
   double arm_seconds = 0;  // time spent in arm CCD
   std::unordered_map<Index, Vec3> arm_targets;
+  PositionFilter filter;
 
   Impl(const TriangleMesh& cloth_, const Positions& x_build, Eigen::VectorXd masses,
        DetectionConfig detection, ContactParams params_,
@@ -783,6 +784,20 @@ struct ContactSolver::Impl {
       x1.row(v) = (c0 + displacement + rotation * (row(*x0, v) - c0)).transpose();
   }
 
+  /// Keeps the first pass's collisions and candidate faces for the per-frame contact files.
+  static void record_first_pass(const DetectionResult& self, ContactStats& stats) {
+    stats.first_pass_collisions = self.collisions;
+    std::vector<Index>& faces = stats.candidate_faces;
+    faces.clear();
+    faces.reserve(2 * self.candidate_triangle_pairs.size());
+    for (const TrianglePair& p : self.candidate_triangle_pairs) {
+      faces.push_back(p.first);
+      faces.push_back(p.second);
+    }
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  }
+
   // ---- the whole substep ---------------------------------------------------------------
 
   ContactStats resolve(const Positions& X0, Positions& x1, const KinematicObstacle& obstacle,
@@ -811,6 +826,7 @@ struct ContactSolver::Impl {
       stats.repulsions += arm_proximity(x1);
     }
     if (params.thickness > 0) stats.repulsions += cloth_proximity(x1);
+    if (filter) filter(x1);
 
     // CCD impulses.
     bool clean = false;
@@ -821,6 +837,7 @@ struct ContactSolver::Impl {
         stats.self_collisions = static_cast<std::int64_t>(self.collisions.size());
         stats.obstacle_collisions = static_cast<std::int64_t>(arm_hits.size());
         stats.detection = self.stats;
+        if (detector.config().keep_candidate_pairs) record_first_pass(self, stats);
       }
       if (arm_hits.empty() && self.collisions.size() == 0) {
         clean = true;
@@ -840,6 +857,7 @@ struct ContactSolver::Impl {
         Contact contact = self_ee_contact(c, x1);
         if (orient(contact) && apply(contact, 0.5 * params.thickness, x1)) ++stats.impulses;
       }
+      if (filter) filter(x1);
     }
 
     // Rigid impact zones.
@@ -965,6 +983,10 @@ ContactSolver::ContactSolver(const TriangleMesh& cloth, const Positions& x_build
 ContactSolver::~ContactSolver() = default;
 ContactSolver::ContactSolver(ContactSolver&&) noexcept = default;
 ContactSolver& ContactSolver::operator=(ContactSolver&&) noexcept = default;
+
+void ContactSolver::set_position_filter(PositionFilter filter) {
+  m_impl->filter = std::move(filter);
+}
 
 ContactStats ContactSolver::resolve(const Positions& x0, Positions& x1,
                                     const KinematicObstacle& obstacle, double dt) {

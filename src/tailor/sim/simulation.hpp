@@ -15,6 +15,7 @@
 #include "tailor/scene/scene.hpp"
 #include "tailor/sim/cloth_model.hpp"
 #include "tailor/sim/contact_solver.hpp"
+#include "tailor/sim/strain_limiter.hpp"
 
 namespace tailor {
 
@@ -32,6 +33,9 @@ struct SimulationOptions {
   /// stretch to 3x; with 0 the default run stretches at most 1.9x but the small-sleeve
   /// twist gesture becomes unstable, so the default keeps the contact friction.
   double arm_friction = -1.0;
+  /// Keep each substep's first-pass collisions and candidate faces in StepRecord::contact
+  /// (for the per-frame contact files; sets DetectionConfig::keep_candidate_pairs).
+  bool record_contacts = false;
 };
 
 /// Everything about one substep.
@@ -42,6 +46,9 @@ struct StepRecord {
   ClothStepInfo cloth;             ///< the implicit solve
   std::int64_t arm_contacts = 0;   ///< vertices held on the implicit arm by contact springs
   std::int64_t arm_projected = 0;  ///< vertices moved out of the implicit arm afterwards
+  StrainLimitStats strain_limit;   ///< the strain limiter (all its rounds)
+  double max_strain = 0;           ///< largest edge strain at the end of the substep
+  double strain_p99 = 0;           ///< 99th-percentile edge strain at the end of the substep
   ContactStats contact;  ///< the contact solver (self-collisions, impulses, zones, detection)
   bool checked = false;  ///< whether the static check ran
   std::int64_t self_intersections = 0;      ///< cloth-cloth (adjacent included), if checked
@@ -70,6 +77,10 @@ struct SimulationTotals {
   std::int64_t impact_zones = 0;         ///< rigid impact zones formed
   std::int64_t last_resorts = 0;         ///< substeps the contact solver had to revert
   std::int64_t failed_solves = 0;        ///< implicit solves that failed (velocities kept)
+  std::int64_t reverted_vertices = 0;    ///< summed over substeps (the last resort)
+  std::int64_t unresolved = 0;           ///< collisions the last resort left (must be 0)
+  double max_strain = 0;                 ///< largest edge strain after any substep
+  double max_strain_p99 = 0;             ///< largest 99th-percentile strain after any substep
   std::int64_t max_ctps = 0, max_vf = 0, max_ee = 0;  ///< per step, sent to detection/CCD
   DetectionStats detection;                           ///< summed over steps
   /// Summed times (ms) of the parts of a substep (see StepRecord).
@@ -113,6 +124,10 @@ class Simulation {
   ClothEnergy energy() const;
   /// Sums over the substeps run so far.
   const SimulationTotals& totals() const;
+  /// Radial-view observer positions now, one per cluster (empty without radial view).
+  std::vector<Vec3> observer_positions() const;
+  /// Radial-view cluster id of every cloth face (empty without radial view).
+  std::vector<Index> cluster_of_face() const;
 
  private:
   struct Impl;
