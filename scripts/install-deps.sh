@@ -6,6 +6,7 @@ packages=(
   g++ cmake make pkg-config
   libeigen3-dev libtbb-dev libfmt-dev libspdlog-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev
+  libsuitesparse-dev libpng-dev
 )
 
 missing=()

@@ -1,13 +1,14 @@
 /// @file
-/// Implicit cloth: element energies, a fixed-pattern sparse system, LDLT or CG.
+/// Implicit cloth: element energies, a fixed-pattern sparse system, Cholesky (CHOLMOD) or CG.
 
 #include "tailor/sim/cloth_model.hpp"
 
 #include <fmt/format.h>
 
+#include <Eigen/CholmodSupport>
 #include <Eigen/IterativeLinearSolvers>
-#include <Eigen/SparseCholesky>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -86,6 +87,12 @@ class BlockJacobi {
   std::vector<Mat3> m_inverse;
 };
 
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
 double wrap_angle(double a) {
   while (a > std::numbers::pi) a -= 2 * std::numbers::pi;
   while (a <= -std::numbers::pi) a += 2 * std::numbers::pi;
@@ -137,8 +144,11 @@ struct ClothModel::Impl {
   std::vector<int> pinned_zero_index;  // entries in pinned rows or columns (diagonal excluded)
   bool pinned_dirty = true;
 
-  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
-  bool ldlt_analyzed = false;
+  // Supernodal Cholesky (CHOLMOD): the symbolic analysis (ordering, supernodes) is done
+  // once per topology, since contacts only change diagonal blocks of the fixed pattern;
+  // each step refactorises numerically.
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky;
+  bool cholesky_analyzed = false;
   Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, BlockJacobi> cg;
   Eigen::VectorXd last_dv;
   ClothSolver solver = ClothSolver::automatic;
@@ -445,6 +455,7 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0,
                                  pinned_targets.rows(), m.pinned.size()));
   }
   if (m.pinned_dirty) m.update_pinned_lists();
+  const auto start = Clock::now();
 
   // Forces and stiffness at x0.
   Positions f = Positions::Zero(m.nv, 3);
@@ -516,17 +527,19 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0,
   }
 
   ClothStepInfo info;
+  info.assemble_ms = ms_since(start);
+  const auto solve_start = Clock::now();
   Eigen::VectorXd dv;
   const bool direct = m.solver == ClothSolver::direct ||
                       (m.solver == ClothSolver::automatic && n <= kDirectSolveLimit);
   if (direct) {
-    if (!m.ldlt_analyzed) {
-      m.ldlt.analyzePattern(A);
-      m.ldlt_analyzed = true;
+    if (!m.cholesky_analyzed) {
+      m.cholesky.analyzePattern(A);
+      m.cholesky_analyzed = true;
     }
-    m.ldlt.factorize(A);
-    info.ok = m.ldlt.info() == Eigen::Success;
-    if (info.ok) dv = m.ldlt.solve(b);
+    m.cholesky.factorize(A);
+    info.ok = m.cholesky.info() == Eigen::Success;
+    if (info.ok) dv = m.cholesky.solve(b);
   } else {
     info.direct = false;
     m.cg.setTolerance(m.cg_tolerance);
@@ -537,6 +550,7 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0,
     info.ok = m.cg.info() == Eigen::Success || m.cg.info() == Eigen::NoConvergence;
   }
   if (info.ok) info.ok = dv.allFinite();
+  info.solve_ms = ms_since(solve_start);
   if (info.ok) {
     info.residual = b.norm() > 0 ? (A * dv - b).norm() / b.norm() : 0.0;
     m.last_dv = dv;

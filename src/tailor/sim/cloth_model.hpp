@@ -64,22 +64,24 @@ struct ContactPlane {
 /// Linear solver of the implicit step.
 enum class ClothSolver {
   automatic,  ///< direct up to ClothModel::kDirectSolveLimit unknowns, else iterative
-  direct,     ///< sparse LDLT (exact)
+  direct,     ///< sparse supernodal Cholesky, CHOLMOD (exact)
   iterative,  ///< conjugate gradient, block-Jacobi preconditioner, warm-started
 };
 
 /// What one implicit step did.
 struct ClothStepInfo {
-  bool direct = true;   ///< sparse LDLT (true) or conjugate gradient (false)
-  int iterations = 0;   ///< CG iterations (0 for LDLT)
+  bool direct = true;   ///< sparse Cholesky (true) or conjugate gradient (false)
+  int iterations = 0;   ///< CG iterations (0 for Cholesky)
   double residual = 0;  ///< relative residual of the linear solve
   bool ok = true;       ///< false if the solve failed (then the step keeps v0)
+  double assemble_ms = 0;  ///< forces and system assembly
+  double solve_ms = 0;     ///< factorisation and solve (or CG)
 };
 
 /// Implicit cloth model on a fixed mesh.
 class ClothModel {
  public:
-  /// Systems with at most this many unknowns use sparse LDLT, larger ones CG.
+  /// Systems with at most this many unknowns use sparse Cholesky, larger ones CG.
   static constexpr Index kDirectSolveLimit = 60000;
 
   /// `rest` gives rest lengths, angles and areas. `warp` (one row per face, optional)

@@ -64,6 +64,9 @@ void to_json(nlohmann::json& j, const StepRecord& r) {
                      {"detection", c.detection},
                      {"ms",
                       {{"forces_solve", r.forces_solve_ms},
+                       {"assemble", r.cloth.assemble_ms},
+                       {"solve", r.cloth.solve_ms},
+                       {"strain_limit", r.strain_ms},
                        {"detection", r.detection_ms},
                        {"response", r.response_ms},
                        {"check", r.check_ms},
@@ -173,6 +176,7 @@ struct Simulation::Impl {
     record.arm_contacts = finish_arm_contacts(planes, x1, released, normal_forces);
     // Strain limit and the implicit arm together (alternating projections); the
     // projection carries no friction here: friction acted in the solve.
+    const auto strain_start = Clock::now();
     record.strain_limit = limiter.apply(x1, kStrainSweeps, [&](Positions& x_end) {
       const ArmCollisionStats arm_stats =
           project_out_of_arm(arm, skeleton, skeleton1, x, x_end, margin, 0.0, fixed, &projected_ids);
@@ -180,6 +184,7 @@ struct Simulation::Impl {
       record.arm_projected += arm_stats.projected;
       return arm_stats.projected;
     });
+    record.strain_ms = ms_since(strain_start);
     record.forces_solve_ms = ms_since(step_start);
 
     if (contact) {
@@ -242,6 +247,9 @@ struct Simulation::Impl {
     t.max_ee = std::max(t.max_ee, r.contact.detection.ee_tested);
     t.detection += r.contact.detection;
     t.forces_solve_ms += r.forces_solve_ms;
+    t.assemble_ms += r.cloth.assemble_ms;
+    t.solve_ms += r.cloth.solve_ms;
+    t.strain_ms += r.strain_ms;
     t.detection_ms += r.detection_ms;
     t.response_ms += r.response_ms;
     t.check_ms += r.check_ms;
@@ -342,6 +350,9 @@ nlohmann::json simulation_summary(const Simulation& simulation, bool interrupted
   j["unresolved"] = t.unresolved;
   j["strain"] = {{"max", t.max_strain}, {"p99_max", t.max_strain_p99}};
   j["ms_per_step"] = {{"forces_solve", t.forces_solve_ms / steps},
+                      {"assemble", t.assemble_ms / steps},
+                      {"solve", t.solve_ms / steps},
+                      {"strain_limit", t.strain_ms / steps},
                       {"detection", t.detection_ms / steps},
                       {"response", t.response_ms / steps},
                       {"check", t.check_ms / steps},

@@ -53,7 +53,8 @@ struct StepRecord {
   bool checked = false;  ///< whether the static check ran
   std::int64_t self_intersections = 0;      ///< cloth-cloth (adjacent included), if checked
   std::int64_t obstacle_intersections = 0;  ///< cloth-arm, if checked
-  double forces_solve_ms = 0;  ///< forces, system assembly, linear solve, arm projection
+  double forces_solve_ms = 0;  ///< forces, assembly, linear solve, strain limit, arm projection
+  double strain_ms = 0;        ///< strain limiting with the arm projection (inside forces_solve)
   double detection_ms = 0;     ///< self-collision detection inside the contact solver
   double response_ms = 0;      ///< contact response inside the contact solver
   double check_ms = 0;         ///< static intersection check
@@ -85,6 +86,8 @@ struct SimulationTotals {
   DetectionStats detection;                           ///< summed over steps
   /// Summed times (ms) of the parts of a substep (see StepRecord).
   double forces_solve_ms = 0, detection_ms = 0, response_ms = 0, check_ms = 0, step_ms = 0;
+  /// Parts of forces_solve_ms (ms, summed).
+  double assemble_ms = 0, solve_ms = 0, strain_ms = 0;
   double wall_seconds = 0;  ///< wall time spent in step_frame()
 };
 
