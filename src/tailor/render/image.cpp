@@ -114,6 +114,8 @@ std::string encode_png(const Image& image) {
     throw InputError("libpng: cannot encode the image: " + context.error);
   }
   png_set_write_fn(png, &context, write_bytes, flush_bytes);
+  // Fast settings: these pictures are written every frame; size matters less than time.
+  png_set_compression_level(png, 3);
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width()),
                static_cast<png_uint_32>(image.height()), 8, PNG_COLOR_TYPE_RGB,
                PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);

@@ -231,10 +231,17 @@ struct ClothModel::Impl {
             f->row(h.v[i]) -= (k * d * grad.segment<3>(3 * i)).transpose();
         }
         if (k_values != nullptr) {
+          // Gauss-Newton k g gᵀ, except that the coupling of the two opposite vertices
+          // (2, 3) is moved onto their diagonal blocks: g2 g3ᵀ + g3 g2ᵀ ≼ g2 g2ᵀ + g3 g3ᵀ,
+          // so the matrix stays PSD and only stiffer, and the sparsity stays the mesh's
+          // own graph (much less fill-in in the Cholesky factor than with hinge pairs).
           for (int i = 0; i < 4; ++i) {
             for (int j = 0; j < 4; ++j) {
+              const bool opposite = (i == 2 && j == 3) || (i == 3 && j == 2);
+              if (opposite) continue;
+              const double scale = (i == j && i >= 2) ? 2.0 : 1.0;
               add_block(k_values, h.v[i], h.v[j],
-                        k * grad.segment<3>(3 * i) * grad.segment<3>(3 * j).transpose());
+                        scale * k * grad.segment<3>(3 * i) * grad.segment<3>(3 * j).transpose());
             }
           }
         }
@@ -336,8 +343,9 @@ ClothModel::ClothModel(const TriangleMesh& mesh, const Positions& rest,
     m.hinges.push_back(h);
   }
 
-  // Fixed sparsity: 3x3 blocks for every vertex pair sharing a face or a hinge, built
-  // column by column from sorted neighbour lists (no triplets: memory linear and small).
+  // Fixed sparsity: 3x3 blocks for every vertex pair sharing a face (the bending
+  // stiffness of a hinge's opposite vertices is lumped, see evaluate()), built column by
+  // column from sorted neighbour lists (no triplets: memory linear and small).
   std::vector<std::vector<Index>> neighbours(static_cast<std::size_t>(m.nv));
   for (Index v = 0; v < m.nv; ++v) neighbours[static_cast<std::size_t>(v)].push_back(v);
   for (Index t = 0; t < nf; ++t) {
@@ -346,11 +354,6 @@ ClothModel::ClothModel(const TriangleMesh& mesh, const Positions& rest,
         if (i != j) neighbours[static_cast<std::size_t>(m.faces(t, j))].push_back(m.faces(t, i));
       }
     }
-  }
-  for (const Hinge& h : m.hinges) {
-    // Only the two opposite vertices are new neighbours; the rest share a face.
-    neighbours[static_cast<std::size_t>(h.v[2])].push_back(h.v[3]);
-    neighbours[static_cast<std::size_t>(h.v[3])].push_back(h.v[2]);
   }
   std::int64_t nnz = 0;
   for (auto& list : neighbours) {

@@ -5,7 +5,8 @@
 /// (Bridson et al. 2003; Grinspun et al. 2003 weights), gravity, mass- and
 /// stiffness-proportional damping, lumped masses from rest areas and pinned vertices.
 ///
-/// Every stiffness matrix is positive semidefinite by construction (Gauss-Newton terms
+/// Every stiffness matrix is positive semidefinite by construction (Gauss-Newton terms, the
+/// coupling of a hinge's two opposite vertices lumped onto their diagonals,
 /// plus the clamped positive part of the stretch term), so the linear system
 /// `(1 + h α) M + (h β + h²) K` is symmetric positive definite on the free vertices.
 
