@@ -6,9 +6,11 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "bench/paper_figures.hpp"
 #include "tailor/detection/detection_config.hpp"
 #include "tailor/scene/scene.hpp"
 
@@ -31,6 +33,7 @@ struct PaperBenchmark {
   std::vector<PaperRun> runs;  ///< basic, curtis, tang, paper, normal_cones, radial_view
   bool same_collisions = true;
   std::string mismatch;  ///< first difference, when not the same
+  std::shared_ptr<PaperFigures> figures;  ///< Fig. 1 as pictures (peak flexion)
 
   /// The run named `name` (one of the above).
   const PaperRun& run(const std::string& name) const;
