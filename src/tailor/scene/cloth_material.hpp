@@ -13,9 +13,10 @@
 ///    = 45 N/m per radian of shear;
 ///  - tensile extensibility EMT = 5 % at 500 gf/cm (490 N/m) -> secant stretch stiffness
 ///    490 / 0.05 = 9.8e3 N/m per unit strain;
-///  - strain limit 3 %: past it the yarns are straight (crimp used up) and the fabric
-///    jams, far below its breaking strain; the simulation never lets an edge pass it
-///    (sim/strain_limiter).
+///  - strain limit 2.5 %: about where a shirting's load-extension curve turns steep (the
+///    crimp is used up, half of EMT), far below its breaking strain; the strain limiter
+///    (sim/strain_limiter) holds every edge to it, and the contact passes after it may add
+///    a little.
 
 namespace tailor {
 
@@ -27,7 +28,7 @@ struct ClothMaterial {
   double bending_stiffness = 7.8e-6; ///< bending stiffness (N·m)
   double stiffness_damping = 2e-3;   ///< Rayleigh damping proportional to stiffness (s)
   double air_damping = 0.2;          ///< Rayleigh damping proportional to mass (1/s)
-  double strain_limit = 0.03;        ///< no edge stretches more than this (fraction)
+  double strain_limit = 0.025;       ///< no edge stretches more than this (fraction)
 };
 
 }  // namespace tailor

@@ -1,9 +1,10 @@
 #pragma once
 /// @file
-/// The arm-sleeve simulation driver (docs/design.md §4). Per substep: forces and implicit
-/// solve -> candidate x1 -> projection out of the implicit arm -> ContactSolver::resolve
-/// (cloth-cloth and cloth-arm mesh) -> v = (x1 - x0) / h -> optional static
-/// intersection check.
+/// The arm-sleeve simulation driver (docs/design.md §4, docs/simulation.md). Per substep:
+/// forces and implicit solve with the arm's contact springs and Coulomb friction ->
+/// candidate x1 -> strain limiting together with the projection out of the implicit arm ->
+/// ContactSolver::resolve (cloth-cloth and cloth-arm mesh, strain limiting between its
+/// passes) -> v = (x1 - x0) / h -> optional static intersection check.
 
 #include <cstdint>
 #include <memory>
@@ -27,11 +28,8 @@ struct SimulationOptions {
   bool contact = true;               ///< run the ContactSolver (off: cloth model and arm only)
   ClothSolver solver = ClothSolver::automatic;  ///< linear solver of the implicit step
   double cg_tolerance = 1e-4;                   ///< relative residual for the iterative solver
-  /// Coulomb friction of the implicit-arm contact pass; negative: ContactParams::friction.
-  /// Known trade-off (measured on the default scene): applied after the elastic solve, per
-  /// vertex, friction 0.3 lets the forearm drag the sleeve until a few edges at the elbow
-  /// stretch to 3x; with 0 the default run stretches at most 1.9x but the small-sleeve
-  /// twist gesture becomes unstable, so the default keeps the contact friction.
+  /// Coulomb friction of the cloth on the implicit arm (inside the implicit solve, see
+  /// ContactPlane); negative: ContactParams::friction.
   double arm_friction = -1.0;
   /// Keep each substep's first-pass collisions and candidate faces in StepRecord::contact
   /// (for the per-frame contact files; sets DetectionConfig::keep_candidate_pairs).
