@@ -38,8 +38,7 @@ const CommandRegistration registration{
       CLI::App* cmd = app.add_subcommand(
           "render", "PNG pictures of a `tailor simulate` folder (frames and a contact sheet)");
       auto o = std::make_shared<RenderOptions>();
-      cmd->add_option("directory", o->directory, "Output folder of `tailor simulate`")
-          ->required();
+      cmd->add_option("directory", o->directory, "Output folder of `tailor simulate`")->required();
       cmd->add_option("--out", o->out, "Where the PNGs go (default: the same folder)");
       cmd->add_option("--width", o->width, "Picture width in pixels")
           ->check(CLI::Range(16, 4096))

@@ -54,8 +54,8 @@ TEST(ClosestPoint, SegmentsMatchDenseSamplingAndHandleDegenerateOnes) {
     EXPECT_LE(d, best + 1e-12);
   }
   // A point (zero-length segment) against a segment.
-  const auto [s, t] = closest_segment_parameters(Vec3(0.5, 1, 0), Vec3(0.5, 1, 0), Vec3(0, 0, 0),
-                                                 Vec3(1, 0, 0));
+  const auto [s, t] =
+      closest_segment_parameters(Vec3(0.5, 1, 0), Vec3(0.5, 1, 0), Vec3(0, 0, 0), Vec3(1, 0, 0));
   EXPECT_DOUBLE_EQ(t, 0.5);
   EXPECT_DOUBLE_EQ(s, 0.0);
 }

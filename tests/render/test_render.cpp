@@ -227,7 +227,8 @@ TEST(RenderCommand, BadInputExitsWithCode2) {
             0);
   std::ofstream(out / frame_file_name("contacts", 1, ".json")) << "{\"candidate_triangles\": [1,";
   EXPECT_EQ(run_cli({"render", out.string()}), 2);
-  std::ofstream(out / frame_file_name("contacts", 1, ".json")) << "{\"candidate_triangles\": [9999]}";
+  std::ofstream(out / frame_file_name("contacts", 1, ".json"))
+      << "{\"candidate_triangles\": [9999]}";
   EXPECT_EQ(run_cli({"render", out.string()}), 2);
   EXPECT_THROW(read_candidate_triangles(out / frame_file_name("contacts", 1, ".json"), 36),
                InputError);

@@ -26,7 +26,8 @@ Patch make_patch(int n, double size) {
   Patch p;
   p.rest.resize(n * n, 3);
   for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) p.rest.row(i * n + j) << size * j / (n - 1), 0.0, size * i / (n - 1);
+    for (int j = 0; j < n; ++j)
+      p.rest.row(i * n + j) << size * j / (n - 1), 0.0, size * i / (n - 1);
   }
   FaceArray f(2 * (n - 1) * (n - 1), 3);
   int k = 0;

@@ -71,8 +71,8 @@ TEST(StrainLimiter, LeavesStatesWithinTheLimitAndCompressionAlone) {
   const Strip s = make_strip(6, 0.01);
   const StrainLimiter limiter(*s.mesh, s.rest, masses_with_pins(12, {0}), 0.05);
   Positions x = s.rest;
-  x.col(0) *= 0.7;    // compressed along the strip
-  x.col(2) *= 1.04;   // stretched across it by 4 %, within 5 %
+  x.col(0) *= 0.7;   // compressed along the strip
+  x.col(2) *= 1.04;  // stretched across it by 4 %, within 5 %
   const Positions before = x;
   const StrainLimitStats stats = limiter.apply(x);
   EXPECT_EQ(stats.corrections, 0);

@@ -33,7 +33,9 @@ struct PaperBenchmark {
   std::vector<PaperRun> runs;  ///< basic, curtis, tang, paper, normal_cones, radial_view
   bool same_collisions = true;
   std::string mismatch;  ///< first difference, when not the same
-  std::shared_ptr<PaperFigures> figures;  ///< Fig. 1 as pictures (peak flexion)
+
+  /// Fig. 1 as pictures (peak flexion), written by write().
+  std::shared_ptr<PaperFigures> figures;
 
   /// The run named `name` (one of the above).
   const PaperRun& run(const std::string& name) const;

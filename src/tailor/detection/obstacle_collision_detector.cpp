@@ -133,9 +133,9 @@ std::vector<ObstacleCollision> ObstacleCollisionDetector::detect(const Positions
                                           row(x1, F(c.cloth, 1)), row(x1, F(c.cloth, 2))});
     } else {
       const auto G = m.edges().row(c.obstacle);
-      r = edge_edge_ccd(EdgeEdgeQuery{row(x0, E(c.cloth, 0)), row(x0, E(c.cloth, 1)),
-                                      row(y0, G(0)), row(y0, G(1)), row(x1, E(c.cloth, 0)),
-                                      row(x1, E(c.cloth, 1)), row(y1, G(0)), row(y1, G(1))});
+      r = edge_edge_ccd(EdgeEdgeQuery{row(x0, E(c.cloth, 0)), row(x0, E(c.cloth, 1)), row(y0, G(0)),
+                                      row(y0, G(1)), row(x1, E(c.cloth, 0)), row(x1, E(c.cloth, 1)),
+                                      row(y1, G(0)), row(y1, G(1))});
     }
     if (r.hit) {
       hit[i] = 1;

@@ -40,8 +40,8 @@ Vec3 closest_point_barycentric(const Vec3& p, const Vec3& a, const Vec3& b, cons
   return {1 - v - w, v, w};
 }
 
-std::pair<double, double> closest_segment_parameters(const Vec3& p0, const Vec3& p1,
-                                                     const Vec3& q0, const Vec3& q1) {
+std::pair<double, double> closest_segment_parameters(const Vec3& p0, const Vec3& p1, const Vec3& q0,
+                                                     const Vec3& q1) {
   const Vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
   const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
   const double tiny = 1e-300;

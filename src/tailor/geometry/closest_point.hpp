@@ -18,7 +18,7 @@ Vec3 closest_point_barycentric(const Vec3& p, const Vec3& a, const Vec3& b, cons
 /// Parameters (s, u) in [0, 1]² of the closest points `p0 + s (p1 - p0)` and
 /// `q0 + u (q1 - q0)` of two segments (the first pair found when they are parallel; a
 /// segment of zero length counts as a point).
-std::pair<double, double> closest_segment_parameters(const Vec3& p0, const Vec3& p1,
-                                                     const Vec3& q0, const Vec3& q1);
+std::pair<double, double> closest_segment_parameters(const Vec3& p0, const Vec3& p1, const Vec3& q0,
+                                                     const Vec3& q1);
 
 }  // namespace tailor

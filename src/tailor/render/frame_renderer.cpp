@@ -42,7 +42,8 @@ ContactSheet::ContactSheet(int frames, int columns, int rows, int thumb_width)
   const int count = std::min(slots, frames + 1);
   for (int i = 0; i < count; ++i) {
     // Evenly spaced from the first to the last frame, both included.
-    const int frame = count == 1 ? 0 : static_cast<int>(static_cast<long>(i) * frames / (count - 1));
+    const int frame =
+        count == 1 ? 0 : static_cast<int>(static_cast<long>(i) * frames / (count - 1));
     if (m_frames.empty() || m_frames.back() != frame) m_frames.push_back(frame);
   }
   m_thumbs.resize(m_frames.size());

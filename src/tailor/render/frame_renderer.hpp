@@ -14,16 +14,16 @@ namespace tailor {
 
 /// Colours and size of the pictures.
 struct RenderSettings {
-  int width = 640;                      ///< output pixels
+  int width = 640;  ///< output pixels
   int height = 480;
-  int supersample = 2;                  ///< rendered at this factor, then box-filtered
-  Vec3 view{0.25, 1.0, 0.65};           ///< from the scene towards the camera
-  Vec3 up{0, 0, -1};                    ///< image up (projected)
+  int supersample = 2;         ///< rendered at this factor, then box-filtered
+  Vec3 view{0.25, 1.0, 0.65};  ///< from the scene towards the camera
+  Vec3 up{0, 0, -1};           ///< image up (projected)
   Rgb background{245, 245, 242};
   Rgb arm{222, 178, 150};
   Rgb cloth_outside{70, 110, 170};
   Rgb cloth_inside{150, 170, 200};
-  Rgb candidate{215, 30, 30};           ///< faces in a candidate triangle pair
+  Rgb candidate{215, 30, 30};  ///< faces in a candidate triangle pair
 };
 
 /// What one picture shows. Arm and cloth are optional (null: not drawn).

@@ -21,8 +21,8 @@ constexpr int kMaxSide = 1 << 14;
 /// libpng reports errors through longjmp; the message is kept here first.
 struct PngContext {
   std::string error;
-  std::string* out = nullptr;       // writing
-  std::string_view in;              // reading
+  std::string* out = nullptr;  // writing
+  std::string_view in;         // reading
   std::size_t offset = 0;
 };
 
@@ -54,8 +54,8 @@ void read_bytes(png_structp png, png_bytep data, png_size_t length) {
 
 Image::Image(int width, int height, Rgb fill) : m_width(width), m_height(height) {
   if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide) {
-    throw InputError(fmt::format("image size {}×{} out of range (1 to {} per side)", width,
-                                 height, kMaxSide));
+    throw InputError(
+        fmt::format("image size {}×{} out of range (1 to {} per side)", width, height, kMaxSide));
   }
   m_pixels.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), fill);
 }
@@ -117,8 +117,8 @@ std::string encode_png(const Image& image) {
   // Fast settings: these pictures are written every frame; size matters less than time.
   png_set_compression_level(png, 3);
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width()),
-               static_cast<png_uint_32>(image.height()), 8, PNG_COLOR_TYPE_RGB,
-               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+               static_cast<png_uint_32>(image.height()), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   for (int y = 0; y < image.height(); ++y) {
     // libpng does not write through the row pointers.
     rows[static_cast<std::size_t>(y)] =

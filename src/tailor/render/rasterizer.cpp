@@ -15,11 +15,25 @@ Camera Camera::framing(const Vec3& lo, const Vec3& hi, const Vec3& view, const V
   c.fov_y_deg = fov_y_deg;
   c.up = up;
   c.target = 0.5 * (lo + hi);
-  const double radius = 0.5 * (hi - lo).norm();
-  const double half_fov = 0.5 * fov_y_deg * std::numbers::pi / 180.0;
-  // The bounding sphere fits both the vertical and the horizontal field of view.
-  const double half = std::min(half_fov, std::atan(std::tan(half_fov) * aspect));
-  c.eye = c.target + view.normalized() * (radius / std::sin(half));
+  const Vec3 back = view.normalized();  // from the target towards the eye
+  const Vec3 right = (-back).cross(up).normalized();
+  const Vec3 true_up = right.cross(-back);
+  // 5 % margin on each side.
+  const double tan_y = std::tan(0.5 * fov_y_deg * std::numbers::pi / 180.0) / 1.05;
+  const double tan_x = tan_y * aspect;
+  // The nearest eye distance at which every corner of the box projects inside the image:
+  // a corner at offset o from the target has depth d - o·back, and must satisfy
+  // |o·right| ≤ tan_x (d - o·back) and |o·up| ≤ tan_y (d - o·back).
+  double distance = 1e-9;
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 corner((k & 1) ? hi.x() : lo.x(), (k & 2) ? hi.y() : lo.y(),
+                      (k & 4) ? hi.z() : lo.z());
+    const Vec3 o = corner - c.target;
+    const double along = o.dot(back);
+    distance = std::max({distance, std::abs(o.dot(right)) / tan_x + along,
+                         std::abs(o.dot(true_up)) / tan_y + along, along + 1e-6});
+  }
+  c.eye = c.target + back * distance;
   return c;
 }
 
@@ -70,14 +84,18 @@ void Rasterizer::draw(const Positions& vertices, const FaceArray& faces, const M
 }
 
 void Rasterizer::fill_triangle(const std::array<Eigen::Vector3d, 3>& s, Rgb colour) {
-  const double area = (s[1].x() - s[0].x()) * (s[2].y() - s[0].y()) -
-                      (s[2].x() - s[0].x()) * (s[1].y() - s[0].y());
+  const double area =
+      (s[1].x() - s[0].x()) * (s[2].y() - s[0].y()) - (s[2].x() - s[0].x()) * (s[1].y() - s[0].y());
   if (!(std::abs(area) > 1e-12)) return;
   const int w = m_image.width(), h = m_image.height();
-  const int x0 = std::max(0, static_cast<int>(std::floor(std::min({s[0].x(), s[1].x(), s[2].x()}))));
-  const int x1 = std::min(w - 1, static_cast<int>(std::ceil(std::max({s[0].x(), s[1].x(), s[2].x()}))));
-  const int y0 = std::max(0, static_cast<int>(std::floor(std::min({s[0].y(), s[1].y(), s[2].y()}))));
-  const int y1 = std::min(h - 1, static_cast<int>(std::ceil(std::max({s[0].y(), s[1].y(), s[2].y()}))));
+  const int x0 =
+      std::max(0, static_cast<int>(std::floor(std::min({s[0].x(), s[1].x(), s[2].x()}))));
+  const int x1 =
+      std::min(w - 1, static_cast<int>(std::ceil(std::max({s[0].x(), s[1].x(), s[2].x()}))));
+  const int y0 =
+      std::max(0, static_cast<int>(std::floor(std::min({s[0].y(), s[1].y(), s[2].y()}))));
+  const int y1 =
+      std::min(h - 1, static_cast<int>(std::ceil(std::max({s[0].y(), s[1].y(), s[2].y()}))));
   const auto edge = [](const Eigen::Vector3d& a, const Eigen::Vector3d& b, double px, double py) {
     return (b.x() - a.x()) * (py - a.y()) - (b.y() - a.y()) * (px - a.x());
   };

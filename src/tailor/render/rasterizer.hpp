@@ -17,8 +17,9 @@ struct Camera {
   Vec3 up = Vec3::UnitY();
   double fov_y_deg = 30;  ///< vertical field of view
 
-  /// A camera looking at the box [lo, hi] from direction `view` (from the target towards
-  /// the eye), far enough that the whole box fits an image of aspect `aspect` (w / h).
+  /// A camera looking at the centre of the box [lo, hi] from direction `view` (from the
+  /// target towards the eye), just far enough that every corner of the box projects inside
+  /// an image of aspect `aspect` (w / h) with a 5 % margin.
   static Camera framing(const Vec3& lo, const Vec3& hi, const Vec3& view, const Vec3& up,
                         double aspect, double fov_y_deg = 30);
 };

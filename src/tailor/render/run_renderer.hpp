@@ -36,8 +36,8 @@ class RunRenderer {
 
 /// What render_run did.
 struct RenderRunResult {
-  int frames = 0;                    ///< frames rendered
-  std::filesystem::path sheet;       ///< the contact sheet written
+  int frames = 0;               ///< frames rendered
+  std::filesystem::path sheet;  ///< the contact sheet written
 };
 
 /// Candidate triangles of one `contacts_NNNN.json` file (its "candidate_triangles"); an

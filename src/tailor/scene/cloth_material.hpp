@@ -22,13 +22,13 @@ namespace tailor {
 
 /// Material of the cloth (SI units).
 struct ClothMaterial {
-  double density = 0.12;             ///< area density (kg/m²)
-  double stretch_stiffness = 9.8e3;  ///< warp/weft stretch stiffness (N/m)
-  double shear_stiffness = 45;       ///< in-plane shear stiffness (N/m)
-  double bending_stiffness = 7.8e-6; ///< bending stiffness (N·m)
-  double stiffness_damping = 2e-3;   ///< Rayleigh damping proportional to stiffness (s)
-  double air_damping = 0.2;          ///< Rayleigh damping proportional to mass (1/s)
-  double strain_limit = 0.025;       ///< no edge stretches more than this (fraction)
+  double density = 0.12;              ///< area density (kg/m²)
+  double stretch_stiffness = 9.8e3;   ///< warp/weft stretch stiffness (N/m)
+  double shear_stiffness = 45;        ///< in-plane shear stiffness (N/m)
+  double bending_stiffness = 7.8e-6;  ///< bending stiffness (N·m)
+  double stiffness_damping = 2e-3;    ///< Rayleigh damping proportional to stiffness (s)
+  double air_damping = 0.2;           ///< Rayleigh damping proportional to mass (1/s)
+  double strain_limit = 0.025;        ///< no edge stretches more than this (fraction)
 };
 
 }  // namespace tailor

@@ -6,7 +6,7 @@ namespace tailor {
 
 /// Contact parameters (SI units: metres, seconds).
 struct ContactParams {
-  double thickness = 1e-3;          ///< repulsion distance between cloth and cloth / arm
+  double thickness = 1e-3;  ///< repulsion distance between cloth and cloth / arm
   /// Coulomb friction coefficient, cloth on skin and on cloth: cotton on dry skin, the low
   /// end of the 0.2-0.6 that textile-skin measurements report (Derler & Gerhardt,
   /// "Tribology of skin", Tribology Letters 45, 2012).

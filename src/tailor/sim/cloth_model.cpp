@@ -494,9 +494,9 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0,
     const Index i = c.vertex;
     if (i < 0 || i >= m.nv || m.is_pinned[static_cast<std::size_t>(i)] != 0) continue;
     const Vec3 xi = row3(x0, i), vi = row3(v0, i);
-    Vec3 rhs =
-        h * (-c.stiffness * c.normal.dot(xi - c.point) - h * c.stiffness * c.normal.dot(vi)) *
-        c.normal;
+    Vec3 rhs = h *
+               (-c.stiffness * c.normal.dot(xi - c.point) - h * c.stiffness * c.normal.dot(vi)) *
+               c.normal;
     Mat3 block = (h * h * c.stiffness) * c.normal * c.normal.transpose();
     const double damping =
         c.friction * c.normal_force / std::max(c.slip_speed, ContactPlane::kStickSpeed);

@@ -71,10 +71,10 @@ enum class ClothSolver {
 
 /// What one implicit step did.
 struct ClothStepInfo {
-  bool direct = true;   ///< sparse Cholesky (true) or conjugate gradient (false)
-  int iterations = 0;   ///< CG iterations (0 for Cholesky)
-  double residual = 0;  ///< relative residual of the linear solve
-  bool ok = true;       ///< false if the solve failed (then the step keeps v0)
+  bool direct = true;      ///< sparse Cholesky (true) or conjugate gradient (false)
+  int iterations = 0;      ///< CG iterations (0 for Cholesky)
+  double residual = 0;     ///< relative residual of the linear solve
+  bool ok = true;          ///< false if the solve failed (then the step keeps v0)
   double assemble_ms = 0;  ///< forces and system assembly
   double solve_ms = 0;     ///< factorisation and solve (or CG)
 };

@@ -99,7 +99,8 @@ std::vector<char> pinned_flags(const Eigen::VectorXd& masses) {
 
 Eigen::VectorXd inverse_masses(const Eigen::VectorXd& masses) {
   Eigen::VectorXd inverse(masses.size());
-  for (Index i = 0; i < masses.size(); ++i) inverse[i] = std::isinf(masses[i]) ? 0.0 : 1.0 / masses[i];
+  for (Index i = 0; i < masses.size(); ++i)
+    inverse[i] = std::isinf(masses[i]) ? 0.0 : 1.0 / masses[i];
   return inverse;
 }
 
@@ -266,9 +267,9 @@ struct ContactSolver::Impl {
       const std::vector<std::vector<Index>> groups = zone_groups(n);
       stats.impact_zones = static_cast<std::int64_t>(groups.size());
       for (const auto& g : groups) {
-        move_zone_rigidly(g, *x0, response.inverse_mass(), pinned, follows,
-                          [&](Index v) { return pinned[v] ? row(pinned_x1, v) : arm_target(v); },
-                          x1);
+        move_zone_rigidly(
+            g, *x0, response.inverse_mass(), pinned, follows,
+            [&](Index v) { return pinned[v] ? row(pinned_x1, v) : arm_target(v); }, x1);
       }
     }
     return false;
@@ -338,7 +339,8 @@ struct ContactSolver::Impl {
       }
       for (const auto& c : found.self.collisions.edge_edge) handle({c.a0, c.a1, c.b0, c.b1});
       if (!changed) {
-        stats.unresolved = static_cast<std::int64_t>(found.obstacle.size() + found.self.collisions.size());
+        stats.unresolved =
+            static_cast<std::int64_t>(found.obstacle.size() + found.self.collisions.size());
         spdlog::warn("contact: {} collisions left that the last resort cannot undo",
                      stats.unresolved);
         break;

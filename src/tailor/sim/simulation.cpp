@@ -84,7 +84,7 @@ struct Simulation::Impl {
   std::vector<Index> pinned;
   Positions pinned_rest;
   std::vector<char> fixed;
-  std::vector<char> released;  // arm contacts let go (their spring pulled last step)
+  std::vector<char> released;         // arm contacts let go (their spring pulled last step)
   std::vector<double> normal_forces;  // arm contact normal force of the last step (N)
   StrainLimiter limiter;
   std::vector<Index> projected_ids;
@@ -99,7 +99,9 @@ struct Simulation::Impl {
   std::unique_ptr<RadialViewClusters> clusters;
 
   Impl(const SceneConfig& config, SimulationOptions opts)
-      : scene(config), options(opts), cloth([&]() -> ClothModel {
+      : scene(config),
+        options(opts),
+        cloth([&]() -> ClothModel {
           const Positions warp = scene.sleeve().warp_directions();
           return ClothModel(*scene.sleeve().mesh, scene.sleeve().rest, config.material, &warp);
         }()),
@@ -178,8 +180,8 @@ struct Simulation::Impl {
     // projection carries no friction here: friction acted in the solve.
     const auto strain_start = Clock::now();
     record.strain_limit = limiter.apply(x1, kStrainSweeps, [&](Positions& x_end) {
-      const ArmCollisionStats arm_stats =
-          project_out_of_arm(arm, skeleton, skeleton1, x, x_end, margin, 0.0, fixed, &projected_ids);
+      const ArmCollisionStats arm_stats = project_out_of_arm(arm, skeleton, skeleton1, x, x_end,
+                                                             margin, 0.0, fixed, &projected_ids);
       for (Index i : projected_ids) released[static_cast<std::size_t>(i)] = 0;
       record.arm_projected += arm_stats.projected;
       return arm_stats.projected;
@@ -316,7 +318,8 @@ std::vector<Vec3> Simulation::observer_positions() const {
   std::vector<Vec3> out;
   const Impl& m = *m_impl;
   if (!m.clusters) return out;
-  for (Index c = 0; c < m.clusters->num_clusters(); ++c) out.push_back(m.clusters->observer(c, m.x));
+  for (Index c = 0; c < m.clusters->num_clusters(); ++c)
+    out.push_back(m.clusters->observer(c, m.x));
   return out;
 }
 

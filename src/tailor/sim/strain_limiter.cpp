@@ -34,7 +34,8 @@ StrainSummary strain_summary(const TriangleMesh& mesh, const Positions& rest, co
   // Nearest rank: the smallest value with at least 99 % of the edges at or below it.
   const auto rank = static_cast<std::size_t>(std::ceil(0.99 * static_cast<double>(strains.size())));
   const auto k = std::min(strains.size() - 1, rank > 0 ? rank - 1 : 0);
-  std::nth_element(strains.begin(), strains.begin() + static_cast<std::ptrdiff_t>(k), strains.end());
+  std::nth_element(strains.begin(), strains.begin() + static_cast<std::ptrdiff_t>(k),
+                   strains.end());
   s.p99 = strains[k];
   return s;
 }
