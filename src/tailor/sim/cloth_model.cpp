@@ -15,6 +15,7 @@
 #include <numbers>
 
 #include "tailor/geometry/error.hpp"
+#include "tailor/sim/block_jacobi.hpp"
 
 namespace tailor {
 namespace {
@@ -33,58 +34,6 @@ struct Hinge {
   std::array<Index, 4> v{};  // a, b, c, d
   double weight = 0;         // 3 |e|² / (A1 + A2) at rest
   double rest_angle = 0;
-};
-
-/// Block-Jacobi preconditioner for Eigen's CG: inverts the 3x3 diagonal blocks, which
-/// holds a vertex's mass, its own stiffness and its contact spring exactly.
-class BlockJacobi {
- public:
-  using StorageIndex = int;
-  enum { ColsAtCompileTime = Eigen::Dynamic, MaxColsAtCompileTime = Eigen::Dynamic };
-
-  BlockJacobi() = default;
-  template <typename M>
-  explicit BlockJacobi(const M& m) {
-    compute(m);
-  }
-  template <typename M>
-  BlockJacobi& analyzePattern(const M&) {
-    return *this;
-  }
-  template <typename M>
-  BlockJacobi& factorize(const M& m) {
-    return compute(m);
-  }
-  template <typename M>
-  BlockJacobi& compute(const M& m) {
-    const Eigen::Index n = m.rows() / 3;
-    m_inverse.assign(static_cast<std::size_t>(n), Mat3::Zero());
-    for (Eigen::Index col = 0; col < m.outerSize(); ++col) {
-      for (typename M::InnerIterator it(m, col); it; ++it) {
-        if (it.row() / 3 == col / 3)
-          m_inverse[static_cast<std::size_t>(col / 3)](it.row() % 3, col % 3) = it.value();
-      }
-    }
-    for (Mat3& block : m_inverse) {
-      bool invertible = false;
-      Mat3 inverse;
-      block.computeInverseWithCheck(inverse, invertible);
-      block = invertible ? inverse : Mat3::Identity();
-    }
-    return *this;
-  }
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) const {
-    Eigen::VectorXd x(b.size());
-    for (std::size_t i = 0; i < m_inverse.size(); ++i) {
-      x.segment<3>(static_cast<Eigen::Index>(3 * i)) =
-          m_inverse[i] * b.segment<3>(static_cast<Eigen::Index>(3 * i));
-    }
-    return x;
-  }
-  Eigen::ComputationInfo info() const { return Eigen::Success; }
-
- private:
-  std::vector<Mat3> m_inverse;
 };
 
 using Clock = std::chrono::steady_clock;
