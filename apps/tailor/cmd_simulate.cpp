@@ -103,9 +103,19 @@ void print_table(const nlohmann::json& s) {
   row("intersections (static check)",
       fmt::format("{} in {} checked steps", s["intersections"].get<std::int64_t>(),
                   s["checked_steps"].get<std::int64_t>()));
+  row("reverted vertices / unresolved",
+      fmt::format("{} / {}", s["reverted_vertices"].get<std::int64_t>(),
+                  s["unresolved"].get<std::int64_t>()));
+  row("edge strain max / p99",
+      fmt::format("{:.2f} % / {:.2f} %", 100 * s["strain"]["max"].get<double>(),
+                  100 * s["strain"]["p99_max"].get<double>()));
   row("forces+solve ms/step", fmt::format("{:.3f}", ms["forces_solve"].get<double>()));
+  row("  assembly / factor+solve",
+      fmt::format("{:.3f} / {:.3f}", ms["assemble"].get<double>(), ms["solve"].get<double>()));
+  row("  strain limit + arm", fmt::format("{:.3f}", ms["strain_limit"].get<double>()));
   row("detection ms/step", fmt::format("{:.3f}", ms["detection"].get<double>()));
   row("response ms/step", fmt::format("{:.3f}", ms["response"].get<double>()));
+  row("static check ms/step", fmt::format("{:.3f}", ms["check"].get<double>()));
   row("whole step ms/step", fmt::format("{:.3f}", ms["total"].get<double>()));
   row("frames per second", fmt::format("{:.2f}", s["frames_per_second"].get<double>()));
 }
