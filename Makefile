@@ -12,9 +12,10 @@ build: deps
 	@cmake --preset release >/dev/null
 	@cmake --build --preset release -j $(JOBS)
 
-## The main job: the arm-sleeve simulation (no input needed).
+## The main job: the arm-sleeve simulation (no input needed): OBJ frames, contact files,
+## a rendered PNG of every frame and a contact sheet (out/sleeve/contact_sheet.png).
 demo: build
-	$(TAILOR) simulate --out out/sleeve
+	$(TAILOR) simulate --out out/sleeve --render
 
 ## Release build + every test suite.
 test: build

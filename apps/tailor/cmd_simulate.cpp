@@ -11,11 +11,14 @@
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <limits>
 #include <optional>
+#include <utility>
 #include <string>
 
 #include "command.hpp"
 #include "tailor/geometry/error.hpp"
+#include "tailor/render/run_renderer.hpp"
 #include "tailor/scene/scene.hpp"
 #include "tailor/sim/frame_writer.hpp"
 #include "tailor/sim/simulation.hpp"
@@ -42,8 +45,28 @@ struct SimulateOptions {
   std::string out = "out/sleeve";
   int rings = 0, segments = 0;
   bool check_every_step = false;
+  bool contacts = true;
+  bool render = false;
   int threads = 0;
 };
+
+/// A box around every position the arm takes during the run (from the gesture, so the
+/// camera is fixed before the first frame) and the sleeve's rest shape.
+std::pair<Vec3, Vec3> run_bounds(const Simulation& sim) {
+  const Scene& scene = sim.scene();
+  const SceneConfig& c = scene.config();
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  const auto extend = [&](const Positions& x) {
+    for (Eigen::Index i = 0; i < x.rows(); ++i) {
+      lo = lo.cwiseMin(x.row(i).transpose());
+      hi = hi.cwiseMax(x.row(i).transpose());
+    }
+  };
+  extend(sim.cloth_positions());
+  for (int f = 0; f <= c.frames; ++f)
+    extend(scene.arm().skin(scene.gesture().pose_at(f * c.time_step)));
+  return {lo, hi};
+}
 
 void print_progress(int frame, int frames, double fps, std::int64_t collisions) {
   const int width = 30;
@@ -80,9 +103,19 @@ void print_table(const nlohmann::json& s) {
   row("intersections (static check)",
       fmt::format("{} in {} checked steps", s["intersections"].get<std::int64_t>(),
                   s["checked_steps"].get<std::int64_t>()));
+  row("reverted vertices / unresolved",
+      fmt::format("{} / {}", s["reverted_vertices"].get<std::int64_t>(),
+                  s["unresolved"].get<std::int64_t>()));
+  row("edge strain max / p99",
+      fmt::format("{:.2f} % / {:.2f} %", 100 * s["strain"]["max"].get<double>(),
+                  100 * s["strain"]["p99_max"].get<double>()));
   row("forces+solve ms/step", fmt::format("{:.3f}", ms["forces_solve"].get<double>()));
+  row("  assembly / factor+solve",
+      fmt::format("{:.3f} / {:.3f}", ms["assemble"].get<double>(), ms["solve"].get<double>()));
+  row("  strain limit + arm", fmt::format("{:.3f}", ms["strain_limit"].get<double>()));
   row("detection ms/step", fmt::format("{:.3f}", ms["detection"].get<double>()));
   row("response ms/step", fmt::format("{:.3f}", ms["response"].get<double>()));
+  row("static check ms/step", fmt::format("{:.3f}", ms["check"].get<double>()));
   row("whole step ms/step", fmt::format("{:.3f}", ms["total"].get<double>()));
   row("frames per second", fmt::format("{:.2f}", s["frames_per_second"].get<double>()));
 }
@@ -105,6 +138,7 @@ int run_simulate(const SimulateOptions& o) {
   options.detection.threads = o.threads;
   options.check_intersections = o.check_every_step;
   options.check_frames = true;  // cheap at the default size; every substep on request
+  options.record_contacts = o.contacts;
 
   std::optional<tbb::global_control> parallelism;
   if (o.threads > 0) {
@@ -117,6 +151,29 @@ int run_simulate(const SimulateOptions& o) {
   const auto& cloth_faces = sim.cloth_mesh().faces();
   const auto& arm_faces = sim.arm_mesh().faces();
   writer.write_frame(0, sim.cloth_positions(), cloth_faces, sim.arm_positions(), arm_faces);
+  if (o.contacts) {
+    const std::vector<Index> clusters = sim.cluster_of_face();
+    if (!clusters.empty()) writer.write_clusters(clusters);
+  }
+  // Pictures on the fly: the contact sheet always (cheap), every frame with --render.
+  const auto [lo, hi] = run_bounds(sim);
+  RunRenderer pictures(o.out, lo, hi, config.frames);
+  pictures.set_write_frames(o.render);
+  const auto draw = [&](int frame, const std::vector<StepRecord>* records) {
+    FrameView view;
+    view.arm = &sim.arm_positions();
+    view.arm_faces = &arm_faces;
+    view.cloth = &sim.cloth_positions();
+    view.cloth_faces = &cloth_faces;
+    if (records != nullptr) {
+      for (const StepRecord& r : *records)
+        view.highlighted_faces.insert(view.highlighted_faces.end(),
+                                      r.contact.candidate_faces.begin(),
+                                      r.contact.candidate_faces.end());
+    }
+    pictures.add_frame(frame, view);
+  };
+  draw(0, nullptr);
   spdlog::info(
       "simulating '{}' ({} frames, {} substeps, sleeve {}×{} = {} vertices, method {}) into {}",
       config.gesture.name, config.frames, config.substeps, config.sleeve.rings,
@@ -129,6 +186,8 @@ int run_simulate(const SimulateOptions& o) {
     writer.write_frame(sim.frame(), sim.cloth_positions(), cloth_faces, sim.arm_positions(),
                        arm_faces);
     writer.append_steps(records);
+    if (o.contacts) writer.write_contacts(sim.frame(), records, sim.observer_positions());
+    draw(sim.frame(), &records);
     if (tty) {
       const auto& t = sim.totals();
       print_progress(sim.frame(), config.frames,
@@ -140,10 +199,13 @@ int run_simulate(const SimulateOptions& o) {
     }
   }
   if (tty) fmt::print(stderr, "\n");
+  const std::filesystem::path sheet = pictures.finish();
   nlohmann::json summary = simulation_summary(sim, interrupted);
   summary["method"] = o.method;
   writer.write_summary(summary);
   print_table(summary);
+  fmt::print("  {:<30} {}{}\n", "pictures", sheet.string(),
+             o.render ? fmt::format(" and render_NNNN.png ({} frames)", sim.frame() + 1) : "");
   if (interrupted) spdlog::warn("interrupted after frame {}", sim.frame());
   const std::int64_t intersections = summary["intersections"].get<std::int64_t>();
   if (intersections > 0) {
@@ -172,6 +234,11 @@ const CommandRegistration registration{
       cmd->add_flag(
           "--check-intersections", o->check_every_step,
           "Run the static intersection check after every substep (default: after every frame)");
+      cmd->add_flag("--render", o->render,
+                    "Also write a PNG of every frame (render_NNNN.png; contact_sheet.png is "
+                    "always written)");
+      cmd->add_flag("!--no-contacts", o->contacts,
+                    "Do not write the per-frame contact files (contacts_NNNN.json, clusters.json)");
       cmd->add_option("--threads", o->threads, "Worker threads (0: all)")
           ->check(CLI::NonNegativeNumber);
       return [o] { return run_simulate(*o); };

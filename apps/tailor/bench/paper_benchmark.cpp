@@ -128,11 +128,13 @@ void PaperBenchmark::write(const std::filesystem::path& dir) const {
     pairs.series.push_back(per_step(name, sum));
   }
   pairs.write(dir / "table1.svg");
+  if (figures) figures->write(dir);
 }
 
 PaperBenchmark run_paper_benchmark(
     const SceneConfig& scene, const std::function<void(const std::string&, int, int)>& progress) {
   PaperBenchmark bench;
+  bench.figures = std::make_shared<PaperFigures>(peak_flexion_frame(scene));
   const std::vector<std::pair<std::string, DetectionConfig>> configs{
       {"basic", DetectionConfig::preset("basic")}, {"curtis", DetectionConfig::preset("curtis")},
       {"tang", DetectionConfig::preset("tang")},   {"paper", DetectionConfig::preset("paper")},
@@ -143,9 +145,12 @@ PaperBenchmark run_paper_benchmark(
     run.config = config;
     SimulationOptions options;
     options.detection = config;
+    options.record_contacts = true;  // the candidate faces of Fig. 1's pictures
     Simulation simulation(scene, options);
     for (int frame = 0; frame < scene.frames; ++frame) {
-      for (const StepRecord& step : simulation.step_frame()) {
+      const std::vector<StepRecord>& records = simulation.step_frame();
+      bench.figures->observe(name, simulation, records);
+      for (const StepRecord& step : records) {
         const DetectionStats& d = step.contact.detection;
         run.ctps.push_back(d.candidate_triangle_pairs);
         run.vf.push_back(d.vf_tested);

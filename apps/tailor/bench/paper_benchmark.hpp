@@ -6,9 +6,11 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "bench/paper_figures.hpp"
 #include "tailor/detection/detection_config.hpp"
 #include "tailor/scene/scene.hpp"
 
@@ -31,6 +33,9 @@ struct PaperBenchmark {
   std::vector<PaperRun> runs;  ///< basic, curtis, tang, paper, normal_cones, radial_view
   bool same_collisions = true;
   std::string mismatch;  ///< first difference, when not the same
+
+  /// Fig. 1 as pictures (peak flexion), written by write().
+  std::shared_ptr<PaperFigures> figures;
 
   /// The run named `name` (one of the above).
   const PaperRun& run(const std::string& name) const;

@@ -176,6 +176,7 @@ SceneConfig parse_scene_config(const json& root, const std::string& source) {
       mr.number("bending_stiffness", c.material.bending_stiffness, 0, kBig, false);
       mr.number("stiffness_damping", c.material.stiffness_damping, 0, 10, false);
       mr.number("air_damping", c.material.air_damping, 0, 1000, false);
+      mr.number("strain_limit", c.material.strain_limit, 0, 10);
       mr.finish();
     }
     r.finish();
@@ -257,7 +258,8 @@ json scene_config_to_json(const SceneConfig& c) {
                    {"shear_stiffness", c.material.shear_stiffness},
                    {"bending_stiffness", c.material.bending_stiffness},
                    {"stiffness_damping", c.material.stiffness_damping},
-                   {"air_damping", c.material.air_damping}}}};
+                   {"air_damping", c.material.air_damping},
+                   {"strain_limit", c.material.strain_limit}}}};
   j["contact"] = {{"thickness", c.contact.thickness},
                   {"friction", c.contact.friction},
                   {"max_impulse_iterations", c.contact.max_impulse_iterations},

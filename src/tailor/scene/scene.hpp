@@ -11,12 +11,12 @@
 ///            "rings": 40, "segments": 24, "cap_rings": 5 },
 ///   "gesture": { "name": "elbow", "max_flexion_deg": 130, "speed": 1.0, "settle_time": 0.3 },
 ///   "sleeve": { "rings": 21, "segments": 33, "slack": 0.03, "start": 0.02, "length": 0.53,
-///               "material": { "density": 0.15, "stretch_stiffness": 500, "shear_stiffness": 50,
-///                             "bending_stiffness": 1e-5, "stiffness_damping": 0.002,
-///                             "air_damping": 0.2 } },
-///   "contact": { "thickness": 0.002, "friction": 0.3, "max_impulse_iterations": 20,
+///               "material": { "density": 0.12, "stretch_stiffness": 9800, "shear_stiffness": 45,
+///                             "bending_stiffness": 7.8e-6, "stiffness_damping": 0.002,
+///                             "air_damping": 0.2, "strain_limit": 0.025 } },
+///   "contact": { "thickness": 0.002, "friction": 0.25, "max_impulse_iterations": 20,
 ///                "max_zone_iterations": 100 },
-///   "time_step": 0.0333333, "substeps": 5, "frames": 80, "gravity": [0, -9.81, 0] }
+///   "time_step": 0.0333333, "substeps": 3, "frames": 80, "gravity": [0, -9.81, 0] }
 /// ```
 
 #include <array>
@@ -46,7 +46,7 @@ struct SceneConfig {
     return p;
   }();
   double time_step = 1.0 / 30.0;  ///< frame duration (s)
-  int substeps = 5;               ///< implicit steps per frame
+  int substeps = 3;               ///< implicit steps per frame
   int frames = 80;                ///< frames to simulate
   Vec3 gravity{0, -9.81, 0};      ///< m/s² (-y is down)
 };

@@ -16,8 +16,9 @@ std::array<Eigen::Isometry3d, 2> bone_motion(const ArmSkeleton& s0, const ArmSke
 
 std::vector<ContactPlane> arm_contact_planes(const Arm& arm, const ArmSkeleton& skeleton0,
                                              const ArmSkeleton& skeleton1, const Positions& x0,
-                                             const Eigen::VectorXd& masses, double h, double margin,
-                                             double activation, double stiffness_ratio,
+                                             const Positions& v0, const Eigen::VectorXd& masses,
+                                             double h, const ArmContactSettings& settings,
+                                             const std::vector<double>& normal_forces,
                                              const std::vector<char>& fixed,
                                              std::vector<char>& released) {
   std::vector<ContactPlane> planes;
@@ -27,7 +28,7 @@ std::vector<ContactPlane> arm_contact_planes(const Arm& arm, const ArmSkeleton& 
     if (!fixed.empty() && fixed[k] != 0) continue;
     const Vec3 p = x0.row(i).transpose();
     const ArmDistance d0 = arm.distance(skeleton0, p);
-    if (d0.distance > margin + activation) {
+    if (d0.distance > settings.margin + settings.activation) {
       released[k] = 0;  // away from the arm: the next touch is a new contact
       continue;
     }
@@ -37,39 +38,30 @@ std::vector<ContactPlane> arm_contact_planes(const Arm& arm, const ArmSkeleton& 
     ContactPlane c;
     c.vertex = static_cast<Index>(i);
     c.normal = d1.normal;
-    c.point = carried + (margin - d1.distance) * d1.normal;
-    c.stiffness = stiffness_ratio * masses[i] / (h * h);
+    c.point = carried + (settings.margin - d1.distance) * d1.normal;
+    c.stiffness = settings.stiffness_ratio * masses[i] / (h * h);
+    c.friction = settings.friction;
+    c.normal_force = normal_forces[k];
+    c.velocity = (carried - p) / h;
+    c.slip_speed = c.tangential_speed(v0.row(i).transpose());
     planes.push_back(c);
   }
   return planes;
 }
 
-std::int64_t finish_arm_contacts(const std::vector<ContactPlane>& planes, const Arm& arm,
-                                 const ArmSkeleton& skeleton0, const ArmSkeleton& skeleton1,
-                                 const Positions& x0, Positions& x1, const Eigen::VectorXd& masses,
-                                 double h, double friction, std::vector<char>& released) {
+std::int64_t finish_arm_contacts(const std::vector<ContactPlane>& planes, const Positions& x1,
+                                 std::vector<char>& released, std::vector<double>& normal_forces) {
   std::int64_t pushing = 0;
-  const auto motion = bone_motion(skeleton0, skeleton1);
+  std::fill(normal_forces.begin(), normal_forces.end(), 0.0);
   for (const ContactPlane& c : planes) {
-    const Index i = c.vertex;
-    Vec3 p = x1.row(i).transpose();
-    const double s = c.normal.dot(p - c.point);
-    if (s > 0) {
-      released[static_cast<std::size_t>(i)] = 1;
+    const auto i = static_cast<std::size_t>(c.vertex);
+    const Vec3 p = x1.row(c.vertex).transpose();
+    if (c.normal.dot(p - c.point) > 0) {
+      released[i] = 1;
       continue;
     }
     ++pushing;
-    if (friction <= 0) continue;
-    // The spring's normal impulse h k (-s), as a position change h² k (-s) / m.
-    const double normal_shift = h * h * c.stiffness * (-s) / masses[i];
-    const Vec3 x0i = x0.row(i).transpose();
-    const ArmDistance d0 = arm.distance(skeleton0, x0i);
-    const Vec3 carried = motion[static_cast<std::size_t>(d0.bone)] * x0i;
-    Vec3 slip = p - carried;
-    slip -= slip.dot(c.normal) * c.normal;
-    const double len = slip.norm();
-    if (len > 0) p -= std::min(1.0, friction * normal_shift / len) * slip;
-    x1.row(i) = p.transpose();
+    normal_forces[i] = c.force_at(p);
   }
   return pushing;
 }
@@ -87,6 +79,7 @@ ArmCollisionStats project_out_of_arm(const Arm& arm, const ArmSkeleton& skeleton
   for (Eigen::Index i = 0; i < x1.rows(); ++i) {
     if (!fixed.empty() && fixed[static_cast<std::size_t>(i)] != 0) continue;
     Vec3 p = x1.row(i).transpose();
+    if (arm.signed_distance(skeleton1, p) >= margin) continue;  // cheap test first
     bool moved = false;
     // A few passes: in the elbow crease, leaving one cone can enter the other.
     for (int pass = 0; pass < 4; ++pass) {

@@ -1,19 +1,21 @@
 /// @file
-/// Implicit cloth: element energies, a fixed-pattern sparse system, LDLT or CG.
+/// Implicit cloth: element energies, a fixed-pattern sparse system, Cholesky (CHOLMOD) or CG.
 
 #include "tailor/sim/cloth_model.hpp"
 
 #include <fmt/format.h>
 
+#include <Eigen/CholmodSupport>
 #include <Eigen/IterativeLinearSolvers>
-#include <Eigen/SparseCholesky>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numbers>
 
 #include "tailor/geometry/error.hpp"
+#include "tailor/sim/block_jacobi.hpp"
 
 namespace tailor {
 namespace {
@@ -34,57 +36,11 @@ struct Hinge {
   double rest_angle = 0;
 };
 
-/// Block-Jacobi preconditioner for Eigen's CG: inverts the 3x3 diagonal blocks, which
-/// holds a vertex's mass, its own stiffness and its contact spring exactly.
-class BlockJacobi {
- public:
-  using StorageIndex = int;
-  enum { ColsAtCompileTime = Eigen::Dynamic, MaxColsAtCompileTime = Eigen::Dynamic };
+using Clock = std::chrono::steady_clock;
 
-  BlockJacobi() = default;
-  template <typename M>
-  explicit BlockJacobi(const M& m) {
-    compute(m);
-  }
-  template <typename M>
-  BlockJacobi& analyzePattern(const M&) {
-    return *this;
-  }
-  template <typename M>
-  BlockJacobi& factorize(const M& m) {
-    return compute(m);
-  }
-  template <typename M>
-  BlockJacobi& compute(const M& m) {
-    const Eigen::Index n = m.rows() / 3;
-    m_inverse.assign(static_cast<std::size_t>(n), Mat3::Zero());
-    for (Eigen::Index col = 0; col < m.outerSize(); ++col) {
-      for (typename M::InnerIterator it(m, col); it; ++it) {
-        if (it.row() / 3 == col / 3)
-          m_inverse[static_cast<std::size_t>(col / 3)](it.row() % 3, col % 3) = it.value();
-      }
-    }
-    for (Mat3& block : m_inverse) {
-      bool invertible = false;
-      Mat3 inverse;
-      block.computeInverseWithCheck(inverse, invertible);
-      block = invertible ? inverse : Mat3::Identity();
-    }
-    return *this;
-  }
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) const {
-    Eigen::VectorXd x(b.size());
-    for (std::size_t i = 0; i < m_inverse.size(); ++i) {
-      x.segment<3>(static_cast<Eigen::Index>(3 * i)) =
-          m_inverse[i] * b.segment<3>(static_cast<Eigen::Index>(3 * i));
-    }
-    return x;
-  }
-  Eigen::ComputationInfo info() const { return Eigen::Success; }
-
- private:
-  std::vector<Mat3> m_inverse;
-};
+double ms_since(Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
 
 double wrap_angle(double a) {
   while (a > std::numbers::pi) a -= 2 * std::numbers::pi;
@@ -137,8 +93,11 @@ struct ClothModel::Impl {
   std::vector<int> pinned_zero_index;  // entries in pinned rows or columns (diagonal excluded)
   bool pinned_dirty = true;
 
-  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
-  bool ldlt_analyzed = false;
+  // Supernodal Cholesky (CHOLMOD): the symbolic analysis (ordering, supernodes) is done
+  // once per topology, since contacts only change diagonal blocks of the fixed pattern;
+  // each step refactorises numerically.
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky;
+  bool cholesky_analyzed = false;
   Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, BlockJacobi> cg;
   Eigen::VectorXd last_dv;
   ClothSolver solver = ClothSolver::automatic;
@@ -221,10 +180,17 @@ struct ClothModel::Impl {
             f->row(h.v[i]) -= (k * d * grad.segment<3>(3 * i)).transpose();
         }
         if (k_values != nullptr) {
+          // Gauss-Newton k g gᵀ, except that the coupling of the two opposite vertices
+          // (2, 3) is moved onto their diagonal blocks: g2 g3ᵀ + g3 g2ᵀ ≼ g2 g2ᵀ + g3 g3ᵀ,
+          // so the matrix stays PSD and only stiffer, and the sparsity stays the mesh's
+          // own graph (much less fill-in in the Cholesky factor than with hinge pairs).
           for (int i = 0; i < 4; ++i) {
             for (int j = 0; j < 4; ++j) {
+              const bool opposite = (i == 2 && j == 3) || (i == 3 && j == 2);
+              if (opposite) continue;
+              const double scale = (i == j && i >= 2) ? 2.0 : 1.0;
               add_block(k_values, h.v[i], h.v[j],
-                        k * grad.segment<3>(3 * i) * grad.segment<3>(3 * j).transpose());
+                        scale * k * grad.segment<3>(3 * i) * grad.segment<3>(3 * j).transpose());
             }
           }
         }
@@ -326,8 +292,9 @@ ClothModel::ClothModel(const TriangleMesh& mesh, const Positions& rest,
     m.hinges.push_back(h);
   }
 
-  // Fixed sparsity: 3x3 blocks for every vertex pair sharing a face or a hinge, built
-  // column by column from sorted neighbour lists (no triplets: memory linear and small).
+  // Fixed sparsity: 3x3 blocks for every vertex pair sharing a face (the bending
+  // stiffness of a hinge's opposite vertices is lumped, see evaluate()), built column by
+  // column from sorted neighbour lists (no triplets: memory linear and small).
   std::vector<std::vector<Index>> neighbours(static_cast<std::size_t>(m.nv));
   for (Index v = 0; v < m.nv; ++v) neighbours[static_cast<std::size_t>(v)].push_back(v);
   for (Index t = 0; t < nf; ++t) {
@@ -336,11 +303,6 @@ ClothModel::ClothModel(const TriangleMesh& mesh, const Positions& rest,
         if (i != j) neighbours[static_cast<std::size_t>(m.faces(t, j))].push_back(m.faces(t, i));
       }
     }
-  }
-  for (const Hinge& h : m.hinges) {
-    // Only the two opposite vertices are new neighbours; the rest share a face.
-    neighbours[static_cast<std::size_t>(h.v[2])].push_back(h.v[3]);
-    neighbours[static_cast<std::size_t>(h.v[3])].push_back(h.v[2]);
   }
   std::int64_t nnz = 0;
   for (auto& list : neighbours) {
@@ -445,6 +407,7 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0,
                                  pinned_targets.rows(), m.pinned.size()));
   }
   if (m.pinned_dirty) m.update_pinned_lists();
+  const auto start = Clock::now();
 
   // Forces and stiffness at x0.
   Positions f = Positions::Zero(m.nv, 3);
@@ -474,15 +437,25 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0,
   }
 
   // Contact springs: A += h² k n nᵀ, b += h (f0 - h k n (n·v0)), f0 = -k n (n·(x0 - q)).
+  // Friction (see ContactPlane): f = -c T (v0 + dv - w), c = μλ / max(s, kStickSpeed), so
+  // A += h c T and b -= h c T (v0 - w).
   for (const ContactPlane& c : contacts) {
     const Index i = c.vertex;
     if (i < 0 || i >= m.nv || m.is_pinned[static_cast<std::size_t>(i)] != 0) continue;
     const Vec3 xi = row3(x0, i), vi = row3(v0, i);
-    const Vec3 rhs =
-        h * (-c.stiffness * c.normal.dot(xi - c.point) - h * c.stiffness * c.normal.dot(vi)) *
-        c.normal;
+    Vec3 rhs = h *
+               (-c.stiffness * c.normal.dot(xi - c.point) - h * c.stiffness * c.normal.dot(vi)) *
+               c.normal;
+    Mat3 block = (h * h * c.stiffness) * c.normal * c.normal.transpose();
+    const double damping =
+        c.friction * c.normal_force / std::max(c.slip_speed, ContactPlane::kStickSpeed);
+    if (damping > 0) {
+      const Mat3 tangent = Mat3::Identity() - c.normal * c.normal.transpose();
+      rhs -= h * damping * (tangent * (vi - c.velocity));
+      block += h * damping * tangent;
+    }
     for (int a = 0; a < 3; ++a) b[3 * i + a] += rhs[a];
-    m.add_block(values, i, i, (h * h * c.stiffness) * c.normal * c.normal.transpose());
+    m.add_block(values, i, i, block);
   }
 
   // Pinned vertices: known velocity change, eliminated symmetrically.
@@ -506,17 +479,19 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0,
   }
 
   ClothStepInfo info;
+  info.assemble_ms = ms_since(start);
+  const auto solve_start = Clock::now();
   Eigen::VectorXd dv;
   const bool direct = m.solver == ClothSolver::direct ||
                       (m.solver == ClothSolver::automatic && n <= kDirectSolveLimit);
   if (direct) {
-    if (!m.ldlt_analyzed) {
-      m.ldlt.analyzePattern(A);
-      m.ldlt_analyzed = true;
+    if (!m.cholesky_analyzed) {
+      m.cholesky.analyzePattern(A);
+      m.cholesky_analyzed = true;
     }
-    m.ldlt.factorize(A);
-    info.ok = m.ldlt.info() == Eigen::Success;
-    if (info.ok) dv = m.ldlt.solve(b);
+    m.cholesky.factorize(A);
+    info.ok = m.cholesky.info() == Eigen::Success;
+    if (info.ok) dv = m.cholesky.solve(b);
   } else {
     info.direct = false;
     m.cg.setTolerance(m.cg_tolerance);
@@ -527,6 +502,7 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0,
     info.ok = m.cg.info() == Eigen::Success || m.cg.info() == Eigen::NoConvergence;
   }
   if (info.ok) info.ok = dv.allFinite();
+  info.solve_ms = ms_since(solve_start);
   if (info.ok) {
     info.residual = b.norm() > 0 ? (A * dv - b).norm() / b.norm() : 0.0;
     m.last_dv = dv;

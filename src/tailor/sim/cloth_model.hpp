@@ -5,7 +5,8 @@
 /// (Bridson et al. 2003; Grinspun et al. 2003 weights), gravity, mass- and
 /// stiffness-proportional damping, lumped masses from rest areas and pinned vertices.
 ///
-/// Every stiffness matrix is positive semidefinite by construction (Gauss-Newton terms
+/// Every stiffness matrix is positive semidefinite by construction (Gauss-Newton terms, the
+/// coupling of a hinge's two opposite vertices lumped onto their diagonals,
 /// plus the clamped positive part of the stretch term), so the linear system
 /// `(1 + h α) M + (h β + h²) K` is symmetric positive definite on the free vertices.
 
@@ -29,32 +30,59 @@ struct ClothEnergy {
 /// holds `vertex` on the plane through `point` with unit `normal`, so the solve knows the
 /// vertex cannot move into the obstacle (Baraff & Witkin 1998 constrain such vertices
 /// too; a spring keeps the system a plain SPD solve).
+///
+/// Coulomb friction acts inside the same implicit solve, with the normal force and the
+/// slip speed lagged by one step (as IPC lags them, Li et al. 2020 §5): the tangential
+/// force is `-μ λ T (v1 - w) / max(s, kStickSpeed)` with `T` the tangent projector, `w`
+/// the obstacle's velocity, `λ` = `normal_force` and `s` = `slip_speed`. At a fixed point
+/// (s the actual slip) its magnitude is exactly μλ while sliding faster than
+/// kStickSpeed and below μλ while sticking: Coulomb's law, with sticking resolved to a
+/// creep of at most kStickSpeed.
 struct ContactPlane {
+  /// Slip speed (m/s) below which a contact counts as sticking.
+  static constexpr double kStickSpeed = 1e-3;
   Index vertex = -1;
   Vec3 normal = Vec3::UnitY();
   Vec3 point = Vec3::Zero();
-  double stiffness = 0;  ///< N/m
+  double stiffness = 0;          ///< N/m
+  double friction = 0;           ///< Coulomb coefficient μ
+  double normal_force = 0;       ///< lagged normal force λ (N)
+  double slip_speed = 0;         ///< lagged tangential slip speed (m/s)
+  Vec3 velocity = Vec3::Zero();  ///< obstacle velocity at the contact (m/s)
+
+  /// The spring's push (N, ≥ 0) on a vertex at `x`: the contact's normal force there.
+  double force_at(const Vec3& x) const {
+    const double s = normal.dot(x - point);
+    return s < 0 ? -stiffness * s : 0.0;
+  }
+  /// Tangential speed of a vertex moving at `v` relative to the obstacle.
+  double tangential_speed(const Vec3& v) const {
+    const Vec3 r = v - velocity;
+    return (r - r.dot(normal) * normal).norm();
+  }
 };
 
 /// Linear solver of the implicit step.
 enum class ClothSolver {
   automatic,  ///< direct up to ClothModel::kDirectSolveLimit unknowns, else iterative
-  direct,     ///< sparse LDLT (exact)
+  direct,     ///< sparse supernodal Cholesky, CHOLMOD (exact)
   iterative,  ///< conjugate gradient, block-Jacobi preconditioner, warm-started
 };
 
 /// What one implicit step did.
 struct ClothStepInfo {
-  bool direct = true;   ///< sparse LDLT (true) or conjugate gradient (false)
-  int iterations = 0;   ///< CG iterations (0 for LDLT)
-  double residual = 0;  ///< relative residual of the linear solve
-  bool ok = true;       ///< false if the solve failed (then the step keeps v0)
+  bool direct = true;      ///< sparse Cholesky (true) or conjugate gradient (false)
+  int iterations = 0;      ///< CG iterations (0 for Cholesky)
+  double residual = 0;     ///< relative residual of the linear solve
+  bool ok = true;          ///< false if the solve failed (then the step keeps v0)
+  double assemble_ms = 0;  ///< forces and system assembly
+  double solve_ms = 0;     ///< factorisation and solve (or CG)
 };
 
 /// Implicit cloth model on a fixed mesh.
 class ClothModel {
  public:
-  /// Systems with at most this many unknowns use sparse LDLT, larger ones CG.
+  /// Systems with at most this many unknowns use sparse Cholesky, larger ones CG.
   static constexpr Index kDirectSolveLimit = 60000;
 
   /// `rest` gives rest lengths, angles and areas. `warp` (one row per face, optional)

@@ -5,9 +5,11 @@
 /// zones as the fail-safe (Provot 1997; Harmon et al. 2008), against the cloth itself
 /// and a moving kinematic obstacle (the arm).
 
+#include <functional>
 #include <memory>
 #include <vector>
 
+#include "tailor/detection/collision.hpp"
 #include "tailor/detection/detection_config.hpp"
 #include "tailor/detection/detection_stats.hpp"
 #include "tailor/mesh/triangle_mesh.hpp"
@@ -37,6 +39,11 @@ struct ContactStats {
   /// substep is certified collision-free; see contact_solver.cpp for when it can be > 0).
   std::int64_t unresolved = 0;
   DetectionStats detection;  ///< self-collision detection stats of the first pass
+  /// Self-collisions of the first pass (filled only when the detector keeps candidate
+  /// pairs, DetectionConfig::keep_candidate_pairs, for the per-frame contact files).
+  CollisionSet first_pass_collisions;
+  /// Sorted unique cloth faces in a candidate triangle pair of the first pass (same condition).
+  std::vector<Index> candidate_faces;
   double detection_ms = 0, response_ms = 0;
 };
 
@@ -54,6 +61,13 @@ class ContactSolver {
   ~ContactSolver();
   ContactSolver(ContactSolver&&) noexcept;
   ContactSolver& operator=(ContactSolver&&) noexcept;
+
+  /// A change of the end positions that the solver interleaves with its own (e.g. strain
+  /// limiting): run after the proximity pass and after every CCD impulse pass, each time
+  /// before the detection that certifies the pass, so it can never leave a collision.
+  using PositionFilter = std::function<void(Positions& x1)>;
+  /// Sets (or clears, when empty) the position filter.
+  void set_position_filter(PositionFilter filter);
 
   /// Resolves contacts over the substep of length `dt` (s); `x1` is modified in place.
   ContactStats resolve(const Positions& x0, Positions& x1, const KinematicObstacle& obstacle,

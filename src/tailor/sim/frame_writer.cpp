@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <system_error>
 
@@ -30,8 +31,31 @@ void write_atomically(const std::filesystem::path& path, Write&& write) {
 
 }  // namespace
 
-std::string frame_file_name(const std::string& prefix, int frame) {
-  return fmt::format("{}_{:04d}.obj", prefix, frame);
+std::string frame_file_name(const std::string& prefix, int frame, const std::string& extension) {
+  return fmt::format("{}_{:04d}{}", prefix, frame, extension);
+}
+
+nlohmann::json frame_contacts_json(int frame, const std::vector<StepRecord>& records,
+                                   const std::vector<Vec3>& observers) {
+  std::vector<Index> faces;
+  nlohmann::json vertex_face = nlohmann::json::array(), edge_edge = nlohmann::json::array();
+  for (const StepRecord& r : records) {
+    faces.insert(faces.end(), r.contact.candidate_faces.begin(), r.contact.candidate_faces.end());
+    for (const VertexFaceCollision& c : r.contact.first_pass_collisions.vertex_face)
+      vertex_face.push_back({c.vertex, c.face, r.substep, c.toi});
+    for (const EdgeEdgeCollision& c : r.contact.first_pass_collisions.edge_edge)
+      edge_edge.push_back({c.a0, c.a1, c.b0, c.b1, r.substep, c.toi});
+  }
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  nlohmann::json observer_list = nlohmann::json::array();
+  for (const Vec3& o : observers) observer_list.push_back({o.x(), o.y(), o.z()});
+  return {{"frame", frame},
+          {"candidate_triangles", faces},
+          {"vertex_face", std::move(vertex_face)},
+          {"edge_edge", std::move(edge_edge)},
+          {"observers", std::move(observer_list)},
+          {"substeps", records.size()}};
 }
 
 FrameWriter::FrameWriter(std::filesystem::path directory) : m_directory(std::move(directory)) {
@@ -54,6 +78,17 @@ void FrameWriter::write_frame(int frame, const Positions& cloth, const FaceArray
                    [&](const std::filesystem::path& p) { write_obj(p, cloth, cloth_faces); });
   write_atomically(m_directory / frame_file_name("arm", frame),
                    [&](const std::filesystem::path& p) { write_obj(p, arm, arm_faces); });
+}
+
+void FrameWriter::write_contacts(int frame, const std::vector<StepRecord>& records,
+                                 const std::vector<Vec3>& observers) {
+  const std::string text = frame_contacts_json(frame, records, observers).dump() + "\n";
+  write_file_atomically(m_directory / frame_file_name("contacts", frame, ".json"), text);
+}
+
+void FrameWriter::write_clusters(const std::vector<Index>& cluster_of_face) {
+  const nlohmann::json j = {{"cluster_of_face", cluster_of_face}};
+  write_file_atomically(m_directory / "clusters.json", j.dump() + "\n");
 }
 
 void FrameWriter::append_steps(const std::vector<StepRecord>& records) {

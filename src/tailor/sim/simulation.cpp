@@ -8,8 +8,10 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "tailor/culling/radial_view.hpp"
 #include "tailor/detection/intersection_check.hpp"
 #include "tailor/sim/arm_collision.hpp"
+#include "tailor/sim/strain_limiter.hpp"
 
 namespace tailor {
 namespace {
@@ -20,6 +22,10 @@ using Clock = std::chrono::steady_clock;
 constexpr double kArmMarginFactor = 1.5;
 /// Arm contact springs are this many times stiffer than a vertex's inertia (m / h²).
 constexpr double kArmContactStiffness = 1e3;
+/// Gauss-Seidel sweeps of the strain limiter (each followed by the arm projection).
+constexpr int kStrainSweeps = 100;
+/// Strain-limiting sweeps between two passes of the contact solver.
+constexpr int kContactStrainSweeps = 20;
 
 double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -41,6 +47,15 @@ void to_json(nlohmann::json& j, const StepRecord& r) {
                      {"last_resort", c.last_resort},
                      {"arm_contacts", r.arm_contacts},
                      {"arm_projected", r.arm_projected},
+                     {"max_strain", r.max_strain},
+                     {"strain_p99", r.strain_p99},
+                     {"strain_limit",
+                      {{"sweeps", r.strain_limit.sweeps},
+                       {"corrections", r.strain_limit.corrections},
+                       {"max_strain_before", r.strain_limit.max_strain_before},
+                       {"max_strain_after", r.strain_limit.max_strain_after}}},
+                     {"reverted_vertices", c.reverted_vertices},
+                     {"unresolved", c.unresolved},
                      {"solver",
                       {{"direct", r.cloth.direct},
                        {"iterations", r.cloth.iterations},
@@ -49,6 +64,9 @@ void to_json(nlohmann::json& j, const StepRecord& r) {
                      {"detection", c.detection},
                      {"ms",
                       {{"forces_solve", r.forces_solve_ms},
+                       {"assemble", r.cloth.assemble_ms},
+                       {"solve", r.cloth.solve_ms},
+                       {"strain_limit", r.strain_ms},
                        {"detection", r.detection_ms},
                        {"response", r.response_ms},
                        {"check", r.check_ms},
@@ -66,7 +84,9 @@ struct Simulation::Impl {
   std::vector<Index> pinned;
   Positions pinned_rest;
   std::vector<char> fixed;
-  std::vector<char> released;  // arm contacts let go (their spring pulled last step)
+  std::vector<char> released;         // arm contacts let go (their spring pulled last step)
+  std::vector<double> normal_forces;  // arm contact normal force of the last step (N)
+  StrainLimiter limiter;
   std::vector<Index> projected_ids;
   Positions x, v, y;
   ArmSkeleton skeleton;
@@ -74,11 +94,23 @@ struct Simulation::Impl {
   std::int64_t step_index = 0;
   std::vector<StepRecord> records;
   SimulationTotals totals;
+  // The detector's radial-view clusters, rebuilt here (deterministically the same) for
+  // the observer positions and cluster ids of the contact files.
+  std::unique_ptr<RadialViewClusters> clusters;
 
   Impl(const SceneConfig& config, SimulationOptions opts)
-      : scene(config), options(opts), cloth([&]() -> ClothModel {
+      : scene(config),
+        options(opts),
+        cloth([&]() -> ClothModel {
           const Positions warp = scene.sleeve().warp_directions();
           return ClothModel(*scene.sleeve().mesh, scene.sleeve().rest, config.material, &warp);
+        }()),
+        limiter([&] {
+          Eigen::VectorXd masses = cloth.masses();
+          for (Index p : scene.sleeve().pinned_vertices())
+            masses[p] = std::numeric_limits<double>::infinity();
+          return StrainLimiter(*scene.sleeve().mesh, scene.sleeve().rest, masses,
+                               config.material.strain_limit);
         }()) {
     const Sleeve& sleeve = scene.sleeve();
     pinned = sleeve.pinned_vertices();
@@ -91,6 +123,7 @@ struct Simulation::Impl {
       fixed[static_cast<std::size_t>(pinned[i])] = 1;
     }
     released.assign(fixed.size(), 0);
+    normal_forces.assign(fixed.size(), 0.0);
     x = sleeve.rest;
     v = Positions::Zero(x.rows(), 3);
     const ArmPose pose0 = scene.gesture().pose_at(0.0);
@@ -101,6 +134,10 @@ struct Simulation::Impl {
       const Positions targets = scene.arm().skin_points(pinned_rest, pose0);
       for (std::size_t i = 0; i < pinned.size(); ++i)
         x.row(pinned[i]) = targets.row(static_cast<Eigen::Index>(i));
+    }
+    if (options.record_contacts) options.detection.keep_candidate_pairs = true;
+    if (options.detection.radial_view) {
+      clusters = std::make_unique<RadialViewClusters>(*sleeve.mesh, x, scene.observer_loops());
     }
     if (options.contact) {
       Eigen::VectorXd masses = cloth.masses();
@@ -127,24 +164,39 @@ struct Simulation::Impl {
     Positions y1 = arm.skin(pose1);
     const Positions targets = arm.skin_points(pinned_rest, pose1);
 
-    // Cloth on the arm: contact springs in the solve, friction, then a safety projection.
+    // Cloth on the arm: contact springs and friction in the solve, then strain limiting
+    // and a safety projection out of the implicit arm, alternately.
     const double margin = kArmMarginFactor * config.contact.thickness;
     const double arm_friction =
         options.arm_friction >= 0 ? options.arm_friction : config.contact.friction;
+    const ArmContactSettings arm_settings{margin, 0.5 * margin, kArmContactStiffness, arm_friction};
     const std::vector<ContactPlane> planes =
-        arm_contact_planes(arm, skeleton, skeleton1, x, cloth.masses(), h, margin, 0.5 * margin,
-                           kArmContactStiffness, fixed, released);
+        arm_contact_planes(arm, skeleton, skeleton1, x, v, cloth.masses(), h, arm_settings,
+                           normal_forces, fixed, released);
     Positions x1, v1;
     record.cloth = cloth.step(x, v, targets, config.gravity, h, x1, v1, planes);
-    record.arm_contacts = finish_arm_contacts(planes, arm, skeleton, skeleton1, x, x1,
-                                              cloth.masses(), h, arm_friction, released);
-    const ArmCollisionStats arm_stats = project_out_of_arm(arm, skeleton, skeleton1, x, x1, margin,
-                                                           arm_friction, fixed, &projected_ids);
-    for (Index i : projected_ids) released[static_cast<std::size_t>(i)] = 0;
-    record.arm_projected = arm_stats.projected;
+    record.arm_contacts = finish_arm_contacts(planes, x1, released, normal_forces);
+    // Strain limit and the implicit arm together (alternating projections); the
+    // projection carries no friction here: friction acted in the solve.
+    const auto strain_start = Clock::now();
+    record.strain_limit = limiter.apply(x1, kStrainSweeps, [&](Positions& x_end) {
+      const ArmCollisionStats arm_stats = project_out_of_arm(arm, skeleton, skeleton1, x, x_end,
+                                                             margin, 0.0, fixed, &projected_ids);
+      for (Index i : projected_ids) released[static_cast<std::size_t>(i)] = 0;
+      record.arm_projected += arm_stats.projected;
+      return arm_stats.projected;
+    });
+    record.strain_ms = ms_since(strain_start);
     record.forces_solve_ms = ms_since(step_start);
 
     if (contact) {
+      // Strain limiting interleaved with the contact passes (see ContactSolver).
+      contact->set_position_filter([&](Positions& x_end) {
+        const StrainLimitStats again = limiter.apply(x_end, kContactStrainSweeps);
+        record.strain_limit.sweeps += again.sweeps;
+        record.strain_limit.corrections += again.corrections;
+        record.strain_limit.max_strain_after = again.max_strain_after;
+      });
       KinematicObstacle obstacle;
       obstacle.mesh = &arm.mesh();
       obstacle.x0 = std::move(y);
@@ -155,6 +207,9 @@ struct Simulation::Impl {
     }
     v = (x1 - x) / h;
     x = std::move(x1);
+    const StrainSummary strain = strain_summary(*scene.sleeve().mesh, scene.sleeve().rest, x);
+    record.max_strain = strain.max;
+    record.strain_p99 = strain.p99;
     y = std::move(y1);
     skeleton = skeleton1;
 
@@ -185,11 +240,18 @@ struct Simulation::Impl {
     t.impact_zones += r.contact.impact_zones;
     t.last_resorts += r.contact.last_resort ? 1 : 0;
     t.failed_solves += r.cloth.ok ? 0 : 1;
+    t.reverted_vertices += r.contact.reverted_vertices;
+    t.unresolved += r.contact.unresolved;
+    t.max_strain = std::max(t.max_strain, r.max_strain);
+    t.max_strain_p99 = std::max(t.max_strain_p99, r.strain_p99);
     t.max_ctps = std::max(t.max_ctps, r.contact.detection.candidate_triangle_pairs);
     t.max_vf = std::max(t.max_vf, r.contact.detection.vf_tested);
     t.max_ee = std::max(t.max_ee, r.contact.detection.ee_tested);
     t.detection += r.contact.detection;
     t.forces_solve_ms += r.forces_solve_ms;
+    t.assemble_ms += r.cloth.assemble_ms;
+    t.solve_ms += r.cloth.solve_ms;
+    t.strain_ms += r.strain_ms;
     t.detection_ms += r.detection_ms;
     t.response_ms += r.response_ms;
     t.check_ms += r.check_ms;
@@ -252,6 +314,25 @@ const SimulationTotals& Simulation::totals() const {
   return m_impl->totals;
 }
 
+std::vector<Vec3> Simulation::observer_positions() const {
+  std::vector<Vec3> out;
+  const Impl& m = *m_impl;
+  if (!m.clusters) return out;
+  for (Index c = 0; c < m.clusters->num_clusters(); ++c)
+    out.push_back(m.clusters->observer(c, m.x));
+  return out;
+}
+
+std::vector<Index> Simulation::cluster_of_face() const {
+  const Impl& m = *m_impl;
+  if (!m.clusters) return {};
+  std::vector<Index> out(static_cast<std::size_t>(cloth_mesh().num_faces()), -1);
+  for (Index c = 0; c < m.clusters->num_clusters(); ++c) {
+    for (Index f : m.clusters->faces(c)) out[static_cast<std::size_t>(f)] = c;
+  }
+  return out;
+}
+
 nlohmann::json simulation_summary(const Simulation& simulation, bool interrupted) {
   const SimulationTotals& t = simulation.totals();
   const double steps = t.steps > 0 ? static_cast<double>(t.steps) : 1.0;
@@ -268,7 +349,13 @@ nlohmann::json simulation_summary(const Simulation& simulation, bool interrupted
   j["impact_zones"] = t.impact_zones;
   j["last_resorts"] = t.last_resorts;
   j["failed_solves"] = t.failed_solves;
+  j["reverted_vertices"] = t.reverted_vertices;
+  j["unresolved"] = t.unresolved;
+  j["strain"] = {{"max", t.max_strain}, {"p99_max", t.max_strain_p99}};
   j["ms_per_step"] = {{"forces_solve", t.forces_solve_ms / steps},
+                      {"assemble", t.assemble_ms / steps},
+                      {"solve", t.solve_ms / steps},
+                      {"strain_limit", t.strain_ms / steps},
                       {"detection", t.detection_ms / steps},
                       {"response", t.response_ms / steps},
                       {"check", t.check_ms / steps},

@@ -1,9 +1,10 @@
 #pragma once
 /// @file
-/// The arm-sleeve simulation driver (docs/design.md §4). Per substep: forces and implicit
-/// solve -> candidate x1 -> projection out of the implicit arm -> ContactSolver::resolve
-/// (cloth-cloth and cloth-arm mesh) -> v = (x1 - x0) / h -> optional static
-/// intersection check.
+/// The arm-sleeve simulation driver (docs/design.md §4, docs/simulation.md). Per substep:
+/// forces and implicit solve with the arm's contact springs and Coulomb friction ->
+/// candidate x1 -> strain limiting together with the projection out of the implicit arm ->
+/// ContactSolver::resolve (cloth-cloth and cloth-arm mesh, strain limiting between its
+/// passes) -> v = (x1 - x0) / h -> optional static intersection check.
 
 #include <cstdint>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "tailor/scene/scene.hpp"
 #include "tailor/sim/cloth_model.hpp"
 #include "tailor/sim/contact_solver.hpp"
+#include "tailor/sim/strain_limiter.hpp"
 
 namespace tailor {
 
@@ -26,12 +28,12 @@ struct SimulationOptions {
   bool contact = true;               ///< run the ContactSolver (off: cloth model and arm only)
   ClothSolver solver = ClothSolver::automatic;  ///< linear solver of the implicit step
   double cg_tolerance = 1e-4;                   ///< relative residual for the iterative solver
-  /// Coulomb friction of the implicit-arm contact pass; negative: ContactParams::friction.
-  /// Known trade-off (measured on the default scene): applied after the elastic solve, per
-  /// vertex, friction 0.3 lets the forearm drag the sleeve until a few edges at the elbow
-  /// stretch to 3x; with 0 the default run stretches at most 1.9x but the small-sleeve
-  /// twist gesture becomes unstable, so the default keeps the contact friction.
+  /// Coulomb friction of the cloth on the implicit arm (inside the implicit solve, see
+  /// ContactPlane); negative: ContactParams::friction.
   double arm_friction = -1.0;
+  /// Keep each substep's first-pass collisions and candidate faces in StepRecord::contact
+  /// (for the per-frame contact files; sets DetectionConfig::keep_candidate_pairs).
+  bool record_contacts = false;
 };
 
 /// Everything about one substep.
@@ -42,11 +44,15 @@ struct StepRecord {
   ClothStepInfo cloth;             ///< the implicit solve
   std::int64_t arm_contacts = 0;   ///< vertices held on the implicit arm by contact springs
   std::int64_t arm_projected = 0;  ///< vertices moved out of the implicit arm afterwards
+  StrainLimitStats strain_limit;   ///< the strain limiter (all its rounds)
+  double max_strain = 0;           ///< largest edge strain at the end of the substep
+  double strain_p99 = 0;           ///< 99th-percentile edge strain at the end of the substep
   ContactStats contact;  ///< the contact solver (self-collisions, impulses, zones, detection)
   bool checked = false;  ///< whether the static check ran
   std::int64_t self_intersections = 0;      ///< cloth-cloth (adjacent included), if checked
   std::int64_t obstacle_intersections = 0;  ///< cloth-arm, if checked
-  double forces_solve_ms = 0;  ///< forces, system assembly, linear solve, arm projection
+  double forces_solve_ms = 0;  ///< forces, assembly, linear solve, strain limit, arm projection
+  double strain_ms = 0;        ///< strain limiting with the arm projection (inside forces_solve)
   double detection_ms = 0;     ///< self-collision detection inside the contact solver
   double response_ms = 0;      ///< contact response inside the contact solver
   double check_ms = 0;         ///< static intersection check
@@ -70,10 +76,16 @@ struct SimulationTotals {
   std::int64_t impact_zones = 0;         ///< rigid impact zones formed
   std::int64_t last_resorts = 0;         ///< substeps the contact solver had to revert
   std::int64_t failed_solves = 0;        ///< implicit solves that failed (velocities kept)
+  std::int64_t reverted_vertices = 0;    ///< summed over substeps (the last resort)
+  std::int64_t unresolved = 0;           ///< collisions the last resort left (must be 0)
+  double max_strain = 0;                 ///< largest edge strain after any substep
+  double max_strain_p99 = 0;             ///< largest 99th-percentile strain after any substep
   std::int64_t max_ctps = 0, max_vf = 0, max_ee = 0;  ///< per step, sent to detection/CCD
   DetectionStats detection;                           ///< summed over steps
   /// Summed times (ms) of the parts of a substep (see StepRecord).
   double forces_solve_ms = 0, detection_ms = 0, response_ms = 0, check_ms = 0, step_ms = 0;
+  /// Parts of forces_solve_ms (ms, summed).
+  double assemble_ms = 0, solve_ms = 0, strain_ms = 0;
   double wall_seconds = 0;  ///< wall time spent in step_frame()
 };
 
@@ -113,6 +125,10 @@ class Simulation {
   ClothEnergy energy() const;
   /// Sums over the substeps run so far.
   const SimulationTotals& totals() const;
+  /// Radial-view observer positions now, one per cluster (empty without radial view).
+  std::vector<Vec3> observer_positions() const;
+  /// Radial-view cluster id of every cloth face (empty without radial view).
+  std::vector<Index> cluster_of_face() const;
 
  private:
   struct Impl;

@@ -1,0 +1,174 @@
+/// @file
+/// Proximity repulsion against an obstacle and within the cloth.
+
+#include "tailor/sim/proximity_repulsion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "tailor/geometry/closest_point.hpp"
+
+namespace tailor {
+namespace {
+
+Vec3 row(const Positions& x, Index i) {
+  return x.row(i).transpose();
+}
+
+Aabb point_box(const Vec3& p, double inflate) {
+  Aabb box;
+  box.extend(p);
+  box.min -= inflate;
+  box.max += inflate;
+  return box;
+}
+
+/// Boxes of the end positions of every vertex, edge and face, grown by `inflate`.
+struct EndBoxes {
+  std::vector<Aabb> vertices, edges, faces;
+  EndBoxes(const TriangleMesh& mesh, const Positions& x, double inflate)
+      : vertices(static_cast<std::size_t>(mesh.num_vertices())),
+        edges(static_cast<std::size_t>(mesh.num_edges())),
+        faces(static_cast<std::size_t>(mesh.num_faces())) {
+    for (Index v = 0; v < mesh.num_vertices(); ++v) vertices[v] = point_box(row(x, v), inflate);
+    for (Index e = 0; e < mesh.num_edges(); ++e) {
+      edges[e].extend(vertices[mesh.edges()(e, 0)]);
+      edges[e].extend(vertices[mesh.edges()(e, 1)]);
+    }
+    for (Index f = 0; f < mesh.num_faces(); ++f) {
+      for (int k = 0; k < 3; ++k) faces[f].extend(vertices[mesh.faces()(f, k)]);
+    }
+  }
+};
+
+}  // namespace
+
+ProximityRepulsion::ProximityRepulsion(const TriangleMesh& cloth, const Positions& x_build,
+                                       std::vector<char> pinned)
+    : m_cloth(cloth), m_pinned(std::move(pinned)) {
+  const EndBoxes boxes(cloth, x_build, 0);
+  m_points = Bvh(boxes.vertices);
+  m_edges = Bvh(boxes.edges);
+  m_faces = Bvh(boxes.faces);
+}
+
+std::int64_t ProximityRepulsion::repel_obstacle(const Positions& x0, Positions& x1,
+                                                const TriangleMesh& m, const Positions& y0,
+                                                const Positions& y1, double h, double friction) {
+  const EndBoxes obstacle_boxes(m, y1, h);
+  if (m_obstacle != &m || m_obstacle_faces.num_primitives() != m.num_faces()) {
+    m_obstacle_faces = Bvh(obstacle_boxes.faces);
+    m_obstacle = &m;
+  } else {
+    m_obstacle_faces.refit(obstacle_boxes.faces);
+  }
+  m_points.refit(EndBoxes(m_cloth, x1, 0).vertices);
+  std::vector<std::pair<Index, Index>> pairs;
+  m_points.for_each_overlapping_pair(m_obstacle_faces, [&](Index v, Index f) {
+    if (!m_pinned[v]) pairs.emplace_back(v, f);
+  });
+  std::sort(pairs.begin(), pairs.end());
+  std::int64_t count = 0;
+  for (std::size_t i = 0; i < pairs.size();) {
+    const Index v = pairs[i].first;
+    const Vec3 p = row(x1, v);
+    double best = std::numeric_limits<double>::infinity();
+    Index best_face = -1;
+    Vec3 best_bary = Vec3::Zero();
+    for (; i < pairs.size() && pairs[i].first == v; ++i) {
+      const auto F = m.faces().row(pairs[i].second);
+      const Vec3 a = row(y1, F(0)), b = row(y1, F(1)), c = row(y1, F(2));
+      const Vec3 bary = closest_point_barycentric(p, a, b, c);
+      const double d = (p - (bary[0] * a + bary[1] * b + bary[2] * c)).norm();
+      if (d < best) {
+        best = d;
+        best_face = pairs[i].second;
+        best_bary = bary;
+      }
+    }
+    if (best_face < 0 || !(best < h)) continue;
+    const auto F = m.faces().row(best_face);
+    const Vec3 a1 = row(y1, F(0)), b1 = row(y1, F(1)), c1 = row(y1, F(2));
+    const Vec3 q1 = best_bary[0] * a1 + best_bary[1] * b1 + best_bary[2] * c1;
+    const Vec3 q0 =
+        best_bary[0] * row(y0, F(0)) + best_bary[1] * row(y0, F(1)) + best_bary[2] * row(y0, F(2));
+    Vec3 n = (b1 - a1).cross(c1 - a1);
+    if (!(n.norm() > 0)) continue;
+    n.normalize();
+    const double side = n.dot(p - q1);
+    // Outside: push along the direction to the closest point (the face normal when the
+    // closest point is inside the face); inside: along the face normal.
+    Vec3 dir = n;
+    if (side > 0 && best > 0) dir = (p - q1) / best;
+    const double dn = side > 0 ? h - best : h - side;
+    Vec3 x = p + dn * dir;
+    const Vec3 rel = (x - row(x0, v)) - (q1 - q0);
+    const Vec3 tangential = rel - rel.dot(dir) * dir;
+    const double tl = tangential.norm();
+    if (tl > 0 && friction > 0) x -= std::min(1.0, friction * dn / tl) * tangential;
+    x1.row(v) = x.transpose();
+    ++count;
+  }
+  return count;
+}
+
+std::int64_t ProximityRepulsion::repel_cloth(const Positions& x0, Positions& x1, double h,
+                                             const ContactResponse& response) {
+  const EndBoxes boxes(m_cloth, x1, 0.5 * h);
+  m_points.refit(boxes.vertices);
+  m_edges.refit(boxes.edges);
+  m_faces.refit(boxes.faces);
+  const auto& F = m_cloth.faces();
+  const auto& E = m_cloth.edges();
+  // Each vertex-face and each edge-edge pair is visited once by the traversals.
+  std::vector<std::pair<Index, Index>> vf, ee;
+  m_points.for_each_overlapping_pair(m_faces, [&](Index v, Index f) {
+    if (v != F(f, 0) && v != F(f, 1) && v != F(f, 2)) vf.emplace_back(v, f);
+  });
+  m_edges.for_each_self_overlapping_pair([&](Index e, Index d) {
+    if (E(e, 0) == E(d, 0) || E(e, 0) == E(d, 1) || E(e, 1) == E(d, 0) || E(e, 1) == E(d, 1))
+      return;
+    ee.emplace_back(std::min(e, d), std::max(e, d));
+  });
+  std::int64_t count = 0;
+  const auto repel = [&](Contact& c) {
+    // Distance and direction at t1 (from the current x1).
+    Vec3 rel1 = Vec3::Zero(), rel0 = Vec3::Zero();
+    for (int k = 0; k < 4; ++k) {
+      rel1 += c.points[k].w * c.points[k].p1;
+      rel0 += c.points[k].w * c.points[k].p0;
+    }
+    const double d = rel1.norm();
+    if (!(d < h) || !(d > 0)) return;
+    const Vec3 n = rel1 / d;
+    // Keep the side the pair started on: if the closest direction flipped during the
+    // step, the CCD passes handle it.
+    if (n.dot(rel0) < 0) return;
+    c.normal = n;
+    // The current distance is the gap: cancel the approach up to the overlap, plus a
+    // tenth of the overlap (Bridson et al. 2002, §7.2, in displacement form).
+    double rn = 0;
+    for (int k = 0; k < 4; ++k) rn += c.points[k].w * n.dot(c.points[k].p1 - c.points[k].p0);
+    const double overlap = h - d;
+    const double push = std::min(overlap, std::max(0.0, -rn)) + 0.1 * overlap;
+    if (response.push_apart(c, push, x1)) ++count;
+  };
+  for (const auto& [v, f] : vf) {
+    Contact c;
+    c.points = {response.cloth_point(v, x0, x1), response.cloth_point(F(f, 0), x0, x1),
+                response.cloth_point(F(f, 1), x0, x1), response.cloth_point(F(f, 2), x0, x1)};
+    set_vertex_face_weights(c, 1.0);
+    repel(c);
+  }
+  for (const auto& [e, d] : ee) {
+    Contact c;
+    c.points = {response.cloth_point(E(e, 0), x0, x1), response.cloth_point(E(e, 1), x0, x1),
+                response.cloth_point(E(d, 0), x0, x1), response.cloth_point(E(d, 1), x0, x1)};
+    set_edge_edge_weights(c, 1.0);
+    repel(c);
+  }
+  return count;
+}
+
+}  // namespace tailor
