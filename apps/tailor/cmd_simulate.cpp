@@ -5,16 +5,15 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <tbb/global_control.h>
-#include <unistd.h>
 
-#include <csignal>
-#include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
 #include "command.hpp"
+#include "interrupt.hpp"
+#include "progress.hpp"
 #include "tailor/geometry/error.hpp"
 #include "tailor/scene/scene.hpp"
 #include "tailor/sim/frame_writer.hpp"
@@ -22,17 +21,6 @@
 
 namespace tailor::cli {
 namespace {
-
-volatile std::sig_atomic_t g_interrupted = 0;
-
-extern "C" void on_sigint(int) {
-  if (g_interrupted != 0) {
-    // Second Ctrl-C: stop now.
-    std::signal(SIGINT, SIG_DFL);
-    std::raise(SIGINT);
-  }
-  g_interrupted = 1;
-}
 
 struct SimulateOptions {
   std::string scene;
@@ -45,20 +33,8 @@ struct SimulateOptions {
   int threads = 0;
 };
 
-void print_progress(int frame, int frames, double fps, std::int64_t collisions) {
-  const int width = 30;
-  const int filled = frames > 0 ? width * frame / frames : width;
-  fmt::print(stderr, "\r[{}{}] frame {}/{}  {:.1f} fps  self-collisions {}   ",
-             std::string(static_cast<std::size_t>(filled), '#'),
-             std::string(static_cast<std::size_t>(width - filled), '.'), frame, frames, fps,
-             collisions);
-  std::fflush(stderr);
-}
-
 void print_table(const nlohmann::json& s) {
-  const auto row = [](const char* name, const std::string& value) {
-    fmt::print("  {:<30} {}\n", name, value);
-  };
+  const auto& row = print_summary_row;
   const auto mean_max = [&](const nlohmann::json& j) {
     return fmt::format("{:.1f} mean, {} max", j["mean"].get<double>(),
                        j["max"].get<std::int64_t>());
@@ -89,12 +65,7 @@ void print_table(const nlohmann::json& s) {
 
 int run_simulate(const SimulateOptions& o) {
   // Installed first, so a Ctrl-C during setup also ends after the first frame.
-  g_interrupted = 0;
-  const auto previous = std::signal(SIGINT, on_sigint);
-  struct RestoreSignal {
-    decltype(previous) handler;
-    ~RestoreSignal() { std::signal(SIGINT, handler); }
-  } restore{previous};
+  const InterruptGuard interrupt;
   SceneConfig config = o.scene.empty() ? SceneConfig{} : load_scene_config(o.scene);
   if (!o.gesture.empty()) config.gesture.name = o.gesture;
   if (o.frames >= 0) config.frames = o.frames;
@@ -122,24 +93,25 @@ int run_simulate(const SimulateOptions& o) {
       config.gesture.name, config.frames, config.substeps, config.sleeve.rings,
       config.sleeve.segments, sim.cloth_mesh().num_vertices(), o.method, o.out);
 
-  const bool tty = isatty(fileno(stderr)) != 0;
+  ProgressBar progress(config.frames, "frame");
   bool interrupted = false;
   for (int f = 0; f < config.frames; ++f) {
     const auto& records = sim.step_frame();
     writer.write_frame(sim.frame(), sim.cloth_positions(), cloth_faces, sim.arm_positions(),
                        arm_faces);
     writer.append_steps(records);
-    if (tty) {
+    if (progress.enabled()) {
       const auto& t = sim.totals();
-      print_progress(sim.frame(), config.frames,
-                     t.wall_seconds > 0 ? t.frames / t.wall_seconds : 0.0, t.self_collisions);
+      progress.update(sim.frame(), fmt::format("{:.1f} fps  self-collisions {}",
+                                               t.wall_seconds > 0 ? t.frames / t.wall_seconds : 0.0,
+                                               t.self_collisions));
     }
-    if (g_interrupted != 0 && f + 1 < config.frames) {
+    if (interrupt.interrupted() && f + 1 < config.frames) {
       interrupted = true;
       break;
     }
   }
-  if (tty) fmt::print(stderr, "\n");
+  progress.finish();
   nlohmann::json summary = simulation_summary(sim, interrupted);
   summary["method"] = o.method;
   writer.write_summary(summary);
@@ -150,7 +122,7 @@ int run_simulate(const SimulateOptions& o) {
     spdlog::error("the static check found {} intersections", intersections);
     return kFailure;
   }
-  return interrupted ? 130 : kSuccess;
+  return interrupted ? kInterruptedExitCode : kSuccess;
 }
 
 const CommandRegistration registration{
