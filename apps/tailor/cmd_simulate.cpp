@@ -5,10 +5,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <tbb/global_control.h>
-#include <unistd.h>
 
-#include <csignal>
-#include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <limits>
@@ -17,6 +14,8 @@
 #include <string>
 
 #include "command.hpp"
+#include "interrupt.hpp"
+#include "progress.hpp"
 #include "tailor/geometry/error.hpp"
 #include "tailor/render/run_renderer.hpp"
 #include "tailor/scene/scene.hpp"
@@ -25,17 +24,6 @@
 
 namespace tailor::cli {
 namespace {
-
-volatile std::sig_atomic_t g_interrupted = 0;
-
-extern "C" void on_sigint(int) {
-  if (g_interrupted != 0) {
-    // Second Ctrl-C: stop now.
-    std::signal(SIGINT, SIG_DFL);
-    std::raise(SIGINT);
-  }
-  g_interrupted = 1;
-}
 
 struct SimulateOptions {
   std::string scene;
@@ -68,20 +56,8 @@ std::pair<Vec3, Vec3> run_bounds(const Simulation& sim) {
   return {lo, hi};
 }
 
-void print_progress(int frame, int frames, double fps, std::int64_t collisions) {
-  const int width = 30;
-  const int filled = frames > 0 ? width * frame / frames : width;
-  fmt::print(stderr, "\r[{}{}] frame {}/{}  {:.1f} fps  self-collisions {}   ",
-             std::string(static_cast<std::size_t>(filled), '#'),
-             std::string(static_cast<std::size_t>(width - filled), '.'), frame, frames, fps,
-             collisions);
-  std::fflush(stderr);
-}
-
 void print_table(const nlohmann::json& s) {
-  const auto row = [](const char* name, const std::string& value) {
-    fmt::print("  {:<30} {}\n", name, value);
-  };
+  const auto& row = print_summary_row;
   const auto mean_max = [&](const nlohmann::json& j) {
     return fmt::format("{:.1f} mean, {} max", j["mean"].get<double>(),
                        j["max"].get<std::int64_t>());
@@ -122,12 +98,7 @@ void print_table(const nlohmann::json& s) {
 
 int run_simulate(const SimulateOptions& o) {
   // Installed first, so a Ctrl-C during setup also ends after the first frame.
-  g_interrupted = 0;
-  const auto previous = std::signal(SIGINT, on_sigint);
-  struct RestoreSignal {
-    decltype(previous) handler;
-    ~RestoreSignal() { std::signal(SIGINT, handler); }
-  } restore{previous};
+  const InterruptGuard interrupt;
   SceneConfig config = o.scene.empty() ? SceneConfig{} : load_scene_config(o.scene);
   if (!o.gesture.empty()) config.gesture.name = o.gesture;
   if (o.frames >= 0) config.frames = o.frames;
@@ -179,7 +150,7 @@ int run_simulate(const SimulateOptions& o) {
       config.gesture.name, config.frames, config.substeps, config.sleeve.rings,
       config.sleeve.segments, sim.cloth_mesh().num_vertices(), o.method, o.out);
 
-  const bool tty = isatty(fileno(stderr)) != 0;
+  ProgressBar progress(config.frames, "frame");
   bool interrupted = false;
   for (int f = 0; f < config.frames; ++f) {
     const auto& records = sim.step_frame();
@@ -188,17 +159,18 @@ int run_simulate(const SimulateOptions& o) {
     writer.append_steps(records);
     if (o.contacts) writer.write_contacts(sim.frame(), records, sim.observer_positions());
     draw(sim.frame(), &records);
-    if (tty) {
+    if (progress.enabled()) {
       const auto& t = sim.totals();
-      print_progress(sim.frame(), config.frames,
-                     t.wall_seconds > 0 ? t.frames / t.wall_seconds : 0.0, t.self_collisions);
+      progress.update(sim.frame(), fmt::format("{:.1f} fps  self-collisions {}",
+                                               t.wall_seconds > 0 ? t.frames / t.wall_seconds : 0.0,
+                                               t.self_collisions));
     }
-    if (g_interrupted != 0 && f + 1 < config.frames) {
+    if (interrupt.interrupted() && f + 1 < config.frames) {
       interrupted = true;
       break;
     }
   }
-  if (tty) fmt::print(stderr, "\n");
+  progress.finish();
   const std::filesystem::path sheet = pictures.finish();
   nlohmann::json summary = simulation_summary(sim, interrupted);
   summary["method"] = o.method;
@@ -212,7 +184,7 @@ int run_simulate(const SimulateOptions& o) {
     spdlog::error("the static check found {} intersections", intersections);
     return kFailure;
   }
-  return interrupted ? 130 : kSuccess;
+  return interrupted ? kInterruptedExitCode : kSuccess;
 }
 
 const CommandRegistration registration{

@@ -11,6 +11,7 @@
 #include <system_error>
 
 #include "tailor/geometry/error.hpp"
+#include "tailor/io/frame_files.hpp"
 #include "tailor/io/mesh_io.hpp"
 
 namespace tailor {
@@ -79,51 +80,22 @@ bool is_file(const std::filesystem::path& path) {
   return std::filesystem::is_regular_file(path, ec);
 }
 
-/// Sort key of a file name: its last run of digits (leading zeros dropped), if any.
-std::optional<std::string> name_number(const std::filesystem::path& path) {
-  const std::string stem = path.stem().string();
-  std::size_t end = stem.size();
-  while (end > 0 && !std::isdigit(static_cast<unsigned char>(stem[end - 1]))) --end;
-  if (end == 0) return std::nullopt;
-  std::size_t begin = end;
-  while (begin > 0 && std::isdigit(static_cast<unsigned char>(stem[begin - 1]))) --begin;
-  while (begin + 1 < end && stem[begin] == '0') ++begin;
-  return stem.substr(begin, end - begin);
-}
-
-/// Orders numbers as digit strings, so any length works without overflow.
-bool number_less(const std::string& a, const std::string& b) {
-  if (a.size() != b.size()) return a.size() < b.size();
-  return a < b;
-}
-
 std::vector<std::filesystem::path> list_folder(const std::filesystem::path& folder) {
-  struct Entry {
-    std::optional<std::string> number;
-    std::filesystem::path path;
-  };
-  std::vector<Entry> entries;
+  std::vector<std::filesystem::path> paths;
   std::error_code ec;
   for (auto it = std::filesystem::directory_iterator(folder, ec);
        !ec && it != std::filesystem::directory_iterator(); it.increment(ec)) {
     std::error_code type_ec;
     if (!it->is_regular_file(type_ec) || !is_mesh_file_name(it->path())) continue;
-    entries.push_back({name_number(it->path()), it->path()});
+    paths.push_back(it->path());
   }
   if (ec) {
     throw InputError(fmt::format("cannot read folder {}: {}", folder.string(), ec.message()));
   }
-  if (entries.empty()) {
+  if (paths.empty()) {
     throw InputError(fmt::format("no .obj or .ply files in folder {}", folder.string()));
   }
-  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
-    if (a.number.has_value() != b.number.has_value()) return a.number.has_value();
-    if (a.number && *a.number != *b.number) return number_less(*a.number, *b.number);
-    return a.path.filename() < b.path.filename();
-  });
-  std::vector<std::filesystem::path> paths;
-  paths.reserve(entries.size());
-  for (Entry& entry : entries) paths.push_back(std::move(entry.path));
+  sort_frame_files(paths);
   return paths;
 }
 
@@ -151,9 +123,10 @@ std::vector<std::filesystem::path> list_frame_files(
   }
   std::error_code ec;
   if (std::filesystem::is_directory(folder_or_pattern, ec)) return list_folder(folder_or_pattern);
+  if (has_glob_wildcard(text)) return expand_frame_glob(text);
   throw InputError(
       fmt::format("cannot open frames '{}': not a folder, and not a pattern such "
-                  "as frames/%d.ply",
+                  "as frames/%d.ply or 'frames/*.ply'",
                   text));
 }
 

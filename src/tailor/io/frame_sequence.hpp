@@ -12,12 +12,14 @@
 namespace tailor {
 
 /// Lists the frame files named by `folder_or_pattern`:
-/// - a folder: every `.obj`/`.ply` file in it (any case), sorted by the number in the
-///   file name (the last run of digits; names without a number last), then by name;
+/// - a folder: every `.obj`/`.ply` file in it (any case), in natural order
+///   (sort_frame_files: by the number in the file name, names without a number last);
 /// - a printf pattern such as `frames/%d.ply` or `out/cloth_%04d.obj` (one `%d`, `%i` or
 ///   `%u` with an optional `0` flag and width; `%%` is a literal `%`): indices from the
-///   first existing one of 0 and 1, up to the first missing file.
-/// Throws InputError if nothing matches or the argument is neither.
+///   first existing one of 0 and 1, up to the first missing file;
+/// - a glob such as `out/cloth_*.obj` (see expand_frame_glob): the matching mesh files, in
+///   the same order as a folder's.
+/// Throws InputError if nothing matches or the argument is none of these.
 std::vector<std::filesystem::path> list_frame_files(const std::filesystem::path& folder_or_pattern);
 
 /// Frames of one animated mesh. Reads the first frame at construction; every other frame
