@@ -12,6 +12,7 @@
 #include "tailor/detection/self_collision_detector.hpp"
 #include "tailor/geometry/error.hpp"
 #include "tailor/io/mesh_io.hpp"
+#include "tailor/io/observer_loops.hpp"
 
 namespace tailor::cli {
 namespace {
@@ -27,24 +28,6 @@ nlohmann::json collisions_json(const CollisionSet& collisions) {
   for (const auto& c : collisions.vertex_face) vf.push_back({c.vertex, c.face, c.toi});
   for (const auto& c : collisions.edge_edge) ee.push_back({c.a0, c.a1, c.b0, c.b1, c.toi});
   return {{"vertex_face", vf}, {"edge_edge", ee}};
-}
-
-// Section loops for radial view: {"loops": [[v, v, ...], ...]}, one loop per observer.
-std::vector<std::vector<Index>> read_section_loops(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw InputError(fmt::format("{}: cannot open", path));
-  try {
-    const nlohmann::json json = nlohmann::json::parse(file);
-    if (!json.is_object() || !json.contains("loops") || !json["loops"].is_array()) {
-      throw InputError(fmt::format("{}: expected an object with an array \"loops\"", path));
-    }
-    for (const auto& [key, value] : json.items()) {
-      if (key != "loops") throw InputError(fmt::format("{}: unknown field \"{}\"", path, key));
-    }
-    return json["loops"].get<std::vector<std::vector<Index>>>();
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(fmt::format("{}: {}", path, e.what()));
-  }
 }
 
 void print_stats(const DetectionStats& s) {
@@ -93,7 +76,9 @@ int run_detect(const DetectArgs& args) {
   } else {
     const DetectionConfig config = args.detection.config();
     std::vector<std::vector<Index>> loops;
-    if (!args.observers_path.empty()) loops = read_section_loops(args.observers_path);
+    if (!args.observers_path.empty()) {
+      loops = read_observer_loops(args.observers_path, mesh.num_vertices());
+    }
     SelfCollisionDetector detector(mesh, t0.vertices, config, std::move(loops));
     DetectionResult result = detector.detect(t0.vertices, t1.vertices);
     fmt::print("method     : {}\n", args.detection.method);
