@@ -15,6 +15,7 @@
 #include <string>
 
 #include "command.hpp"
+#include "thread_limit.hpp"
 #include "tailor/geometry/error.hpp"
 #include "tailor/scene/scene.hpp"
 #include "tailor/sim/frame_writer.hpp"
@@ -173,7 +174,7 @@ const CommandRegistration registration{
           "--check-intersections", o->check_every_step,
           "Run the static intersection check after every substep (default: after every frame)");
       cmd->add_option("--threads", o->threads, "Worker threads (0: all)")
-          ->check(CLI::NonNegativeNumber);
+          ->check(thread_count_validator());
       return [o] { return run_simulate(*o); };
     }};
 
