@@ -1,5 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages tailor builds with. Idempotent; silent when all are present.
+#   scripts/install-deps.sh          the build, tests and benchmarks (g++)
+#   scripts/install-deps.sh --fuzz   also clang++ and its runtimes (libFuzzer, ASan, UBSan)
+#                                    for `make fuzz`
 set -euo pipefail
 
 packages=(
@@ -7,6 +10,12 @@ packages=(
   libeigen3-dev libtbb-dev libfmt-dev libspdlog-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev
 )
+if [ "${1:-}" = "--fuzz" ]; then
+  packages+=(clang libclang-rt-14-dev)
+elif [ $# -gt 0 ]; then
+  echo "install-deps: unknown option '$1' (expected --fuzz or nothing)" >&2
+  exit 2
+fi
 
 missing=()
 for package in "${packages[@]}"; do
