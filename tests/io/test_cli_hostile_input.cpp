@@ -109,10 +109,13 @@ TEST(CliHostileInput, ObserverIdsMustBeIntegersInRange) {
       {"huge.json", "loops[0][1]"});
 }
 
-TEST(CliHostileInput, BenchChecksItsOutputFolderFirst) {
-  // Used to run the whole benchmark, then fail with exit code 1.
+TEST(CliHostileInput, OutputFoldersAreCheckedFirst) {
+  // bench used to run the whole benchmark, then fail with exit code 1; generate failed
+  // with exit code 1 (an escaping std::filesystem::filesystem_error).
   TempDir dir;
   test::write_bytes(dir / "existing", "a file, not a folder");
+  expect_usage_error(run_cli("generate --triangles 200 --out " + quoted(dir / "existing")),
+                     {"existing", "output folder"});
   for (const char* run : {"scale --max-triangles 1000 --repetitions 1", "paper --frames 1"}) {
     const CliResult r = run_cli(std::string("bench ") + run + " --out " + quoted(dir / "existing"));
     expect_usage_error(r, {"existing", "output folder"});
