@@ -82,6 +82,10 @@ TEST(SceneLimits, HugeArmIsRefusedByTheMemoryBudget) {
   params.cap_rings = 10000;
   params.segments = 100000;
   EXPECT_THROW(Arm{params}, InputError);
+  // Whatever the budget, the vertex count stays within 32-bit ids.
+  const test::ScopedMemoryBudget petabyte(std::uint64_t{1} << 50);
+  params.rings = 100000;
+  EXPECT_THROW(Arm{params}, InputError);
 }
 
 TEST(SceneLimits, TheBudgetDecides) {

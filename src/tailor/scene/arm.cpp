@@ -91,6 +91,13 @@ Arm::Arm(const ArmParams& params) : m_params(params) {
       std::abs(params.elbow_radius - params.wrist_radius) >= params.forearm_length) {
     throw InputError("arm: radii differ by more than a bone length");
   }
+  // Vertex ids are 32-bit: whatever the budget, stay far from the range's end.
+  if (arm_memory_estimate(params) / 4096.0 > static_cast<double>(std::int64_t{1} << 28)) {
+    throw InputError(
+        fmt::format("arm: resolution too high ({} rings, {} cap rings, {} segments: "
+                    "more than 2^28 vertices)",
+                    params.rings, params.cap_rings, params.segments));
+  }
   check_memory_budget(arm_memory_estimate(params),
                       fmt::format("an arm of {} rings, {} cap rings and {} segments", params.rings,
                                   params.cap_rings, params.segments));
