@@ -3,7 +3,7 @@ JOBS ?= 2
 BUILD := build/release
 TAILOR := $(BUILD)/tailor
 
-.PHONY: deps build demo test bench asan clean
+.PHONY: deps build demo test bench asan fuzz clean
 
 deps:
 	@scripts/install-deps.sh
@@ -30,6 +30,17 @@ asan: deps
 	@cmake --preset asan >/dev/null
 	@cmake --build --preset asan -j $(JOBS)
 	ctest --preset asan
+
+## libFuzzer targets (clang++, ASan + UBSan): build, then run each for FUZZ_SECONDS,
+## FUZZ_JOBS at a time (fuzz/README.md).
+FUZZ_SECONDS ?= 60
+FUZZ_JOBS ?= 2
+FUZZ_TARGETS ?= ply obj scene_json observers_json ccd_queries mesh_round_trip detector
+fuzz:
+	@scripts/install-deps.sh --fuzz
+	@cmake --preset fuzz >/dev/null
+	@cmake --build --preset fuzz -j $(JOBS)
+	@scripts/run-fuzzers.sh $(FUZZ_SECONDS) $(FUZZ_JOBS) $(FUZZ_TARGETS)
 
 clean:
 	rm -rf build

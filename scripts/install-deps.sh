@@ -1,5 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages tailor builds with. Idempotent; silent when all are present.
+#   scripts/install-deps.sh          the build, tests and benchmarks (g++)
+#   scripts/install-deps.sh --fuzz   also clang++ and its runtimes (libFuzzer, ASan, UBSan)
+#                                    for `make fuzz`
 set -euo pipefail
 
 # The viewer's node packages (web/package-lock.json); needs no root.
@@ -12,6 +15,12 @@ packages=(
   libsuitesparse-dev libpng-dev
   chromium  # the headless browser of tailor view's browser test (tests/view)
 )
+if [ "${1:-}" = "--fuzz" ]; then
+  packages+=(clang libclang-rt-14-dev)
+elif [ $# -gt 0 ]; then
+  echo "install-deps: unknown option '$1' (expected --fuzz or nothing)" >&2
+  exit 2
+fi
 
 missing=()
 for package in "${packages[@]}"; do

@@ -30,6 +30,7 @@ bool on_terminal() {
 }
 
 int run_paper(const BenchArgs& args) {
+  prepare_output_folder(args.out);  // before the runs, not after them
   SceneConfig scene = args.scene_path.empty() ? SceneConfig{} : load_scene_config(args.scene_path);
   scene.gesture.name = "elbow";
   if (args.frames > 0) scene.frames = args.frames;
@@ -55,6 +56,7 @@ int run_paper(const BenchArgs& args) {
 }
 
 int run_scale(const BenchArgs& args) {
+  prepare_output_folder(args.out);  // before the runs, not after them
   ScaleOptions options;
   options.max_triangles = args.max_triangles;
   options.repetitions = args.repetitions;

@@ -20,10 +20,10 @@
 #include "detection_options.hpp"
 #include "interrupt.hpp"
 #include "progress.hpp"
-#include "section_loops_file.hpp"
 #include "tailor/detection/sequence_check.hpp"
 #include "tailor/geometry/error.hpp"
 #include "tailor/io/frame_sources.hpp"
+#include "tailor/io/observer_loops.hpp"
 
 namespace tailor::cli {
 namespace {
@@ -178,7 +178,6 @@ int run_check(const CheckArgs& args) {
 
   SequenceCheckOptions options;
   options.detection = args.detection.config();
-  if (!args.observers_path.empty()) options.section_loops = read_section_loops(args.observers_path);
   options.first_frame = args.from.value_or(0);
   options.last_frame = args.to.value_or(-1);
   options.check_frames = !args.no_frame_check;
@@ -191,7 +190,10 @@ int run_check(const CheckArgs& args) {
                : sources.obstacle_from_layout
                    ? fmt::format(" with {} beside them as the obstacle", sources.obstacle_pattern)
                    : fmt::format(" with the obstacle {}", sources.obstacle_pattern));
-  SequenceChecker checker(FrameSequence(sources.frames), std::move(obstacle), options);
+  FrameSequence cloth(sources.frames);
+  if (!args.observers_path.empty())
+    options.section_loops = read_observer_loops(args.observers_path, cloth.num_vertices());
+  SequenceChecker checker(std::move(cloth), std::move(obstacle), options);
 
   ProgressBar progress(checker.num_steps(), "step");
   bool interrupted = false;

@@ -61,6 +61,7 @@ const CommandRegistration registration{
       command->add_option("mesh", *mesh, "Mesh file (.obj or .ply)")->required();
       command->add_option("obstacle", *obstacle, "Obstacle mesh file (.obj or .ply)");
       command->add_option("--max-pairs", *max_pairs, "Intersecting pairs to list")
+          ->check(CLI::Range(0, 1'000'000'000))
           ->capture_default_str();
       return [mesh, obstacle, max_pairs] {
         return run_check_intersections(*mesh, *obstacle, *max_pairs);

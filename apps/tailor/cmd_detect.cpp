@@ -8,11 +8,11 @@
 
 #include "command.hpp"
 #include "detection_options.hpp"
-#include "section_loops_file.hpp"
 #include "tailor/detection/brute_force.hpp"
 #include "tailor/detection/self_collision_detector.hpp"
 #include "tailor/geometry/error.hpp"
 #include "tailor/io/mesh_io.hpp"
+#include "tailor/io/observer_loops.hpp"
 
 namespace tailor::cli {
 namespace {
@@ -76,7 +76,9 @@ int run_detect(const DetectArgs& args) {
   } else {
     const DetectionConfig config = args.detection.config();
     std::vector<std::vector<Index>> loops;
-    if (!args.observers_path.empty()) loops = read_section_loops(args.observers_path);
+    if (!args.observers_path.empty()) {
+      loops = read_observer_loops(args.observers_path, mesh.num_vertices());
+    }
     SelfCollisionDetector detector(mesh, t0.vertices, config, std::move(loops));
     DetectionResult result = detector.detect(t0.vertices, t1.vertices);
     fmt::print("method     : {}\n", args.detection.method);

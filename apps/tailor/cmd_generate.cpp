@@ -9,6 +9,7 @@
 #include <string>
 
 #include "command.hpp"
+#include "tailor/io/file_bytes.hpp"
 #include "tailor/io/mesh_io.hpp"
 #include "tailor/mesh/procedural_steps.hpp"
 
@@ -23,9 +24,9 @@ struct GenerateOptions {
 };
 
 int run_generate(const GenerateOptions& options) {
-  const ProceduralStep step = make_folded_cloth_on_sphere(options.triangles, options.seed);
   const std::filesystem::path dir(options.out);
-  std::filesystem::create_directories(dir);
+  prepare_output_folder(dir);  // before the work; a file there is an InputError (exit 2)
+  const ProceduralStep step = make_folded_cloth_on_sphere(options.triangles, options.seed);
   write_mesh(dir / "t0.ply", step.x0, step.faces);
   write_mesh(dir / "t1.ply", step.x1, step.faces);
   fmt::print("{}: {} vertices, {} triangles -> {} and {}\n", options.scene, step.x0.rows(),

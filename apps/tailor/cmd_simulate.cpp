@@ -16,6 +16,7 @@
 #include "command.hpp"
 #include "interrupt.hpp"
 #include "progress.hpp"
+#include "thread_limit.hpp"
 #include "tailor/geometry/error.hpp"
 #include "tailor/render/run_renderer.hpp"
 #include "tailor/scene/scene.hpp"
@@ -212,7 +213,7 @@ const CommandRegistration registration{
       cmd->add_flag("!--no-contacts", o->contacts,
                     "Do not write the per-frame contact files (contacts_NNNN.json, clusters.json)");
       cmd->add_option("--threads", o->threads, "Worker threads (0: all)")
-          ->check(CLI::NonNegativeNumber);
+          ->check(thread_count_validator());
       return [o] { return run_simulate(*o); };
     }};
 

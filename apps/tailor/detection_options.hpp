@@ -7,6 +7,7 @@
 #include <string>
 
 #include "tailor/detection/detection_config.hpp"
+#include "thread_limit.hpp"
 
 namespace tailor::cli {
 
@@ -23,7 +24,7 @@ struct DetectionOptions {
         ->check(CLI::IsMember(DetectionConfig::preset_names()))
         ->capture_default_str();
     command.add_option("--threads", threads, "Worker threads (0: all cores)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(thread_count_validator());
     add_switch(command, "cones", normal_cones, "continuous normal-cone culling");
     add_switch(command, "contour", contour_test,
                "the contour test of cone culling (off is unsound; for comparison only)");

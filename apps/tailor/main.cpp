@@ -9,6 +9,7 @@
 
 #include "command.hpp"
 #include "tailor/geometry/error.hpp"
+#include "tailor/io/memory_budget.hpp"
 
 namespace tailor::cli {
 
@@ -29,6 +30,13 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   bool verbose = false;
   app.add_flag("-v,--verbose", verbose, "Print debug messages");
+  double max_memory_gib = static_cast<double>(tailor::kDefaultMemoryBudget) / (1 << 30);
+  app.add_option("--max-memory", max_memory_gib,
+                 "Memory budget in GiB for anything sized by the input (files, scene "
+                 "resolution); larger inputs are refused")
+      ->check(CLI::Range(1.0 / 1024, 1024.0 * 1024))
+      ->capture_default_str();
+  app.fallthrough();  // global options may also follow the subcommand
 
   auto& registry = command_registry();
   std::sort(registry.begin(), registry.end(),
@@ -46,6 +54,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? kSuccess : kUsageError;
   }
+  tailor::set_memory_budget(static_cast<std::uint64_t>(max_memory_gib * (1 << 30)));
   spdlog::set_pattern("%^%l%$: %v");
   spdlog::set_level(verbose ? spdlog::level::debug : spdlog::level::info);
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -82,6 +83,52 @@ TEST(QueryIo, BadFilesNameFileAndLine) {
   expect_error(write_temp("missing.csv", "") + ".nope", "cannot open");
   EXPECT_THROW(read_ccd_queries("/tmp/unknown_kind.csv"), InputError);
   EXPECT_THROW(read_ccd_truth_json(write_temp("t.json", "[true, 3]")), InputError);
+}
+
+TEST(QueryIo, EmptyFileNamesTheFile) {
+  // Used to load as zero queries; ccd-check then failed with a message naming no file.
+  expect_error(write_temp("empty.csv", ""), "no queries");
+  expect_error(write_temp("blank.csv", "\n  \n"), "no queries");
+}
+
+TEST(QueryIo, HostileFilesFailFastWithShortMessages) {
+  const auto check_short = [](const std::string& path, const std::string& fragment) {
+    try {
+      read_ccd_queries(path);
+      FAIL() << "no InputError for " << path;
+    } catch (const InputError& e) {
+      const std::string msg = e.what();
+      EXPECT_NE(msg.find(fragment), std::string::npos) << msg.substr(0, 400);
+      EXPECT_LT(msg.size(), path.size() + 200) << msg.substr(0, 400);
+    }
+  };
+  // A 10 KB token: quoted in ~40 bytes.
+  check_short(write_temp("token.csv", "1," + std::string(10000, 'x') + ",1,1,1,1\n"),
+              "expected integers");
+  // An integer far longer than any double needs.
+  check_short(write_temp("digits.csv", "1" + std::string(5000, '0') + ",1,1,1,1,1\n"),
+              "longer than 1000");
+  // 2 GiB of zero bytes (sparse): refused at the first line's 16 KiB, not read whole.
+  const std::string zeros = write_temp("zeros.csv", "");
+  std::filesystem::resize_file(zeros, std::uintmax_t{2} << 30);
+  check_short(zeros, "longer than 16384 bytes");
+  std::filesystem::remove(zeros);
+  // Too many columns.
+  check_short(write_temp("columns.csv", std::string(10'000, ',') + "\n"), "got more");
+}
+
+TEST(QueryIo, LongButExactIntegersAreAccepted) {
+  // 2^-1074 (the smallest subnormal): its denominator has 324 digits.
+  mpz_class denominator = 1;
+  denominator <<= 1074;
+  const std::string den = denominator.get_str();
+  ASSERT_EQ(den.size(), 324u);
+  const std::string row = "1," + den + ",0,1,0,1\n";
+  std::string text;
+  for (int i = 0; i < 8; ++i) text += row;
+  const CcdQueryFile f = parse_ccd_queries(text, "queries/vertex-face/tiny.csv");
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f.vertex_face[0].p_t0[0], std::ldexp(1.0, -1074));
 }
 
 }  // namespace

@@ -3,8 +3,10 @@
 /// Helpers shared by the io tests: a per-test temporary folder and message checks.
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -12,6 +14,7 @@
 #include <string_view>
 
 #include "tailor/geometry/error.hpp"
+#include "support/scoped_memory_budget.hpp"
 
 namespace tailor::test {
 
@@ -77,6 +80,43 @@ inline void expect_contains(const std::string& message,
     EXPECT_NE(message.find(part), std::string::npos)
         << "message \"" << message << "\" lacks \"" << part << "\"";
   }
+}
+
+/// Makes `path` a sparse file of `size` zero bytes (no disk blocks, no memory).
+inline void make_sparse_file(const std::filesystem::path& path, std::uintmax_t size,
+                             std::string_view head = {}) {
+  write_bytes(path, head);
+  std::filesystem::resize_file(path, size);
+}
+
+/// Exit code and combined output of one run of the built `tailor` CLI.
+struct CliResult {
+  int exit_code = -1;  ///< -1 when the process did not exit normally (e.g. a crash)
+  std::string output;  ///< stdout and stderr
+};
+
+/// Runs `tailor ARGUMENTS` through the shell (arguments are shell words; quote paths with
+/// quoted()). `shell_prefix` runs first in the same shell (e.g. `ulimit -v N;`).
+inline CliResult run_cli(const std::string& arguments, const std::string& shell_prefix = "") {
+  const std::string command =
+      shell_prefix + " '" + std::string(TAILOR_CLI_PATH) + "' " + arguments + " 2>&1";
+  CliResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  char buffer[4096];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.output.append(buffer, n);
+  const int status = pclose(pipe);
+  if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
+  return result;
+}
+
+/// Single-quotes a path for the shell (appends piecewise: GCC 12 warns on "'" + string&&).
+inline std::string quoted(const std::filesystem::path& path) {
+  std::string text = "'";
+  text += path.string();
+  text += '\'';
+  return text;
 }
 
 }  // namespace tailor::test

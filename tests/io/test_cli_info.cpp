@@ -2,9 +2,7 @@
 /// The built `tailor info` command on good and bad input.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdio>
 #include <string>
 
 #include "io_test_support.hpp"
@@ -12,31 +10,9 @@
 namespace tailor {
 namespace {
 
-struct RunResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-RunResult run_cli(const std::string& arguments) {
-  const std::string command = std::string("'") + TAILOR_CLI_PATH + "' " + arguments + " 2>&1";
-  RunResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.output.append(buffer, n);
-  const int status = pclose(pipe);
-  if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
-  return result;
-}
-
-/// Single-quotes a path for the shell (appends piecewise: GCC 12 warns on "'" + string&&).
-std::string quoted(const std::filesystem::path& path) {
-  std::string text = "'";
-  text += path.string();
-  text += '\'';
-  return text;
-}
+using RunResult = test::CliResult;
+using test::quoted;
+using test::run_cli;
 
 TEST(CliInfo, ReferenceMesh) {
   const auto path = std::filesystem::path(TAILOR_DATA_DIR) / "cloth-funnel/frames/227.ply";

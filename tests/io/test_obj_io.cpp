@@ -119,12 +119,14 @@ TEST(ObjIo, PolygonsAreSplitIntoFans) {
   EXPECT_EQ(m.faces, expected);
 }
 
-TEST(ObjIo, EmptyFileGivesEmptyMesh) {
+TEST(ObjIo, FileWithoutFacesIsRefused) {
   TempDir dir;
   write_bytes(dir / "empty.obj", "");
-  const MeshData m = read_obj(dir / "empty.obj");
-  EXPECT_EQ(m.vertices.rows(), 0);
-  EXPECT_EQ(m.faces.rows(), 0);
+  expect_contains(input_error_message([&] { read_obj(dir / "empty.obj"); }),
+                  {"empty.obj", "no faces"});
+  write_bytes(dir / "points.obj", "v 0 0 0\nv 1 0 0\n# no face\n");
+  expect_contains(input_error_message([&] { read_obj(dir / "points.obj"); }),
+                  {"points.obj", "no faces", "2 vertices"});
 }
 
 /// Writes `text` to a file and returns the message of the InputError reading it throws.

@@ -93,12 +93,16 @@ TEST(PlyIo, RoundTripsInEveryEncodingAndType) {
   }
 }
 
-TEST(PlyIo, EmptyMeshRoundTrips) {
+TEST(PlyIo, MeshWithoutFacesIsRefused) {
   TempDir dir;
   write_ply(dir / "empty.ply", Positions(0, 3), FaceArray(0, 3));
-  const MeshData m = read_ply(dir / "empty.ply");
-  EXPECT_EQ(m.vertices.rows(), 0);
-  EXPECT_EQ(m.faces.rows(), 0);
+  expect_contains(input_error_message([&] { read_ply(dir / "empty.ply"); }),
+                  {"empty.ply", "no faces"});
+  write_bytes(dir / "points.ply",
+              "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+              "property float z\nend_header\n0 0 0\n");
+  expect_contains(input_error_message([&] { read_ply(dir / "points.ply"); }),
+                  {"points.ply", "no faces", "no face element"});
 }
 
 /// Builds PLY bodies value by value in any encoding.

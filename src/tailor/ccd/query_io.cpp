@@ -2,34 +2,37 @@
 
 #include <gmpxx.h>
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "tailor/geometry/error.hpp"
+#include "tailor/io/excerpt.hpp"
+#include "tailor/io/input_file.hpp"
+#include "tailor/io/json_file.hpp"
+#include "tailor/io/memory_budget.hpp"
 
 namespace tailor {
 
 namespace {
 
 [[noreturn]] void fail(const std::string& path, std::size_t line, const std::string& what) {
-  std::ostringstream s;
-  s << path;
-  if (line > 0) s << ":" << line;
-  s << ": " << what;
-  throw InputError(s.str());
+  if (line > 0) throw InputError(fmt::format("{}:{}: {}", path, line, what));
+  throw InputError(fmt::format("{}: {}", path, what));
 }
 
-std::string trim(const std::string& s) {
+std::string_view trim(std::string_view s) {
   const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return {};
+  if (b == std::string_view::npos) return {};
   const auto e = s.find_last_not_of(" \t\r\n");
   return s.substr(b, e - b + 1);
 }
 
-bool is_integer(const std::string& s) {
+bool is_integer(std::string_view s) {
   std::size_t i = (!s.empty() && (s[0] == '-' || s[0] == '+')) ? 1 : 0;
   if (i >= s.size()) return false;
   for (; i < s.size(); ++i) {
@@ -39,18 +42,24 @@ bool is_integer(const std::string& s) {
 }
 
 /// num/den as a double, which must be exact.
-double exact_ratio(const std::string& num, const std::string& den, const std::string& path,
+double exact_ratio(std::string_view num, std::string_view den, const std::string& path,
                    std::size_t line) {
-  if (!is_integer(num) || !is_integer(den))
-    fail(path, line, "expected integers, got '" + num + "', '" + den + "'");
-  const mpz_class n(num[0] == '+' ? num.substr(1) : num, 10);
-  const mpz_class d(den[0] == '+' ? den.substr(1) : den, 10);
+  if (!is_integer(num) || !is_integer(den)) {
+    fail(path, line, fmt::format("expected integers, got '{}', '{}'", excerpt(num), excerpt(den)));
+  }
+  if (num.size() > kMaxCcdQueryDigits || den.size() > kMaxCcdQueryDigits) {
+    fail(path, line, fmt::format("integer longer than {} digits", kMaxCcdQueryDigits));
+  }
+  const auto digits = [](std::string_view s) { return std::string(s[0] == '+' ? s.substr(1) : s); };
+  const mpz_class n(digits(num), 10);
+  const mpz_class d(digits(den), 10);
   if (d == 0) fail(path, line, "zero denominator");
   mpq_class q(n, d);
   q.canonicalize();
   const double x = q.get_d();
   if (!std::isfinite(x) || mpq_class(x) != q) {
-    fail(path, line, "value " + num + "/" + den + " is not exactly a double");
+    fail(path, line,
+         fmt::format("value {}/{} is not exactly a double", excerpt(num), excerpt(den)));
   }
   return x;
 }
@@ -73,7 +82,8 @@ std::optional<CcdQueryKind> ccd_query_kind_from_path(const std::string& path) {
   return std::nullopt;
 }
 
-CcdQueryFile read_ccd_queries(const std::string& path, std::optional<CcdQueryKind> kind) {
+CcdQueryFile parse_ccd_queries(std::string_view text, const std::string& path,
+                               std::optional<CcdQueryKind> kind) {
   CcdQueryFile file;
   file.path = path;
   if (!kind) kind = ccd_query_kind_from_path(path);
@@ -83,26 +93,48 @@ CcdQueryFile read_ccd_queries(const std::string& path, std::optional<CcdQueryKin
          "or a file name ending in 'vf'/'ee'");
   }
   file.kind = *kind;
-  std::ifstream in(path);
-  if (!in) fail(path, 0, "cannot open file");
 
   std::vector<Vec3> rows;
   std::vector<int> row_truth;
   std::vector<std::size_t> row_line;
   int columns = -1;
-  std::string text;
   std::size_t line = 0;
-  while (std::getline(in, text)) {
+  for (std::size_t pos = 0; pos < text.size();) {
     ++line;
-    if (trim(text).empty()) continue;
-    std::vector<std::string> fields;
-    std::stringstream ss(text);
-    std::string field;
-    while (std::getline(ss, field, ',')) fields.push_back(trim(field));
-    const int n = static_cast<int>(fields.size());
-    if (n != 6 && n != 7) fail(path, line, "expected 6 or 7 columns, got " + std::to_string(n));
+    // Look for the line's end only so far: a binary file is no CSV.
+    const std::size_t scan = std::min(text.size() - pos, kMaxCcdQueryLineBytes + 1);
+    const char* nl = static_cast<const char*>(std::memchr(text.data() + pos, '\n', scan));
+    if (nl == nullptr && scan > kMaxCcdQueryLineBytes) {
+      fail(path, line, fmt::format("line longer than {} bytes", kMaxCcdQueryLineBytes));
+    }
+    const std::size_t end = nl ? static_cast<std::size_t>(nl - text.data()) : text.size();
+    std::string_view rest = text.substr(pos, end - pos);
+    pos = end + 1;
+    if (trim(rest).empty()) continue;
+    std::string_view fields[7];
+    int n = 0;
+    for (;;) {
+      const std::size_t comma = rest.find(',');
+      if (n == 7) {
+        n = 8;  // too many: the count is all the message needs
+        break;
+      }
+      fields[n++] = trim(rest.substr(0, comma));
+      if (comma == std::string_view::npos) break;
+      rest.remove_prefix(comma + 1);
+    }
+    if (n != 6 && n != 7) {
+      fail(path, line,
+           fmt::format("expected 6 or 7 columns, got {}", n == 8 ? "more" : std::to_string(n)));
+    }
     if (columns == -1) columns = n;
     if (n != columns) fail(path, line, "inconsistent number of columns");
+    if (rows.size() == rows.capacity()) {
+      // Rows, their truth and line numbers; doubled while the vectors grow.
+      check_memory_budget(2.0 * static_cast<double>(rows.size() + 1) *
+                              (sizeof(Vec3) + sizeof(int) + sizeof(std::size_t)),
+                          fmt::format("{}:{}: reading the queries", path, line));
+    }
     Vec3 x;
     for (int k = 0; k < 3; ++k) x[k] = exact_ratio(fields[2 * k], fields[2 * k + 1], path, line);
     rows.push_back(x);
@@ -112,6 +144,7 @@ CcdQueryFile read_ccd_queries(const std::string& path, std::optional<CcdQueryKin
       row_truth.push_back(fields[6] == "1");
     }
   }
+  if (rows.empty()) fail(path, 0, "no queries (the file has no data rows)");
   if (rows.size() % 8 != 0) {
     fail(path, line,
          "the number of rows (" + std::to_string(rows.size()) + ") is not a multiple of 8");
@@ -136,19 +169,22 @@ CcdQueryFile read_ccd_queries(const std::string& path, std::optional<CcdQueryKin
   return file;
 }
 
+CcdQueryFile read_ccd_queries(const std::string& path, std::optional<CcdQueryKind> kind) {
+  if (!kind) kind = ccd_query_kind_from_path(path);
+  if (!kind) return parse_ccd_queries({}, path, kind);  // the error about the kind
+  const InputFile file(path);
+  return parse_ccd_queries(file.bytes(), path, kind);
+}
+
 std::vector<bool> read_ccd_truth_json(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) fail(path, 0, "cannot open file");
-  nlohmann::json j;
-  try {
-    in >> j;
-  } catch (const nlohmann::json::exception& e) {
-    fail(path, 0, std::string("invalid JSON: ") + e.what());
-  }
-  if (!j.is_array()) fail(path, 0, "expected a JSON array of booleans");
+  const nlohmann::json j = read_json_file(path);
+  if (!j.is_array()) fail(path, 0, "expected a JSON array of booleans, got " + json_excerpt(j));
   std::vector<bool> truth;
+  truth.reserve(j.size());
   for (std::size_t i = 0; i < j.size(); ++i) {
-    if (!j[i].is_boolean()) fail(path, 0, "entry " + std::to_string(i) + " is not a boolean");
+    if (!j[i].is_boolean()) {
+      fail(path, 0, fmt::format("entry {} is not a boolean: {}", i, json_excerpt(j[i])));
+    }
     truth.push_back(j[i].get<bool>());
   }
   return truth;

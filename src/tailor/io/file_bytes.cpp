@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -12,6 +14,7 @@
 #include <system_error>
 
 #include "tailor/geometry/error.hpp"
+#include "tailor/io/memory_budget.hpp"
 
 namespace tailor {
 namespace {
@@ -33,11 +36,18 @@ std::string read_file_bytes(const std::filesystem::path& path) {
     throw InputError(fmt::format("cannot open {}: {}", path.string(), std::strerror(errno)));
   }
   std::string bytes;
-  if (const auto size = std::filesystem::file_size(path, ec); !ec) bytes.reserve(size);
+  const std::string what = fmt::format("reading {} into memory", path.string());
+  if (const auto size = std::filesystem::file_size(path, ec); !ec) {
+    check_memory_budget(static_cast<double>(size), what);
+    bytes.reserve(size);
+  }
   char buffer[1 << 16];
   // Read in chunks: works for pipes and files whose size changes, no size query needed.
   for (;;) {
     const std::size_t n = std::fread(buffer, 1, sizeof(buffer), file.get());
+    if (bytes.size() + n > bytes.capacity()) {
+      check_memory_budget(static_cast<double>(bytes.size() + n), what);
+    }
     bytes.append(buffer, n);
     if (n < sizeof(buffer)) break;
   }
@@ -45,6 +55,19 @@ std::string read_file_bytes(const std::filesystem::path& path) {
     throw InputError(fmt::format("cannot read {}: read error", path.string()));
   }
   return bytes;
+}
+
+void prepare_output_folder(const std::filesystem::path& folder) {
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (!std::filesystem::is_directory(folder)) {
+    throw InputError(fmt::format("cannot use {} as the output folder: {}", folder.string(),
+                                 ec ? ec.message() : "it exists and is not a folder"));
+  }
+  if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+    throw InputError(fmt::format("cannot write into the output folder {}: {}", folder.string(),
+                                 std::strerror(errno)));
+  }
 }
 
 void write_file_bytes(const std::filesystem::path& path, std::string_view bytes) {

@@ -16,13 +16,22 @@
 #include <vector>
 
 #include "tailor/geometry/error.hpp"
+#include "tailor/io/excerpt.hpp"
 #include "tailor/io/file_bytes.hpp"
+#include "tailor/io/input_file.hpp"
+#include "tailor/io/memory_budget.hpp"
 #include "tailor/io/text_scan.hpp"
 
 namespace tailor {
 namespace {
 
 using namespace text_scan;
+
+/// Longest OBJ line (a face line of about six million vertices); longer is refused
+/// rather than scanned.
+constexpr std::size_t kMaxObjLineBytes = std::size_t{64} << 20;
+/// Bytes looked at for a line's keyword before the line's end is searched.
+constexpr std::size_t kKeywordScan = 64;
 
 /// OBJ statements that carry nothing this reader needs.
 bool is_ignored_statement(std::string_view keyword) {
@@ -45,11 +54,23 @@ class ObjParser {
     std::size_t pos = 0;
     while (pos < m_text.size()) {
       ++m_line;
-      const char* nl =
-          static_cast<const char*>(std::memchr(m_text.data() + pos, '\n', m_text.size() - pos));
+      // Reject an unknown statement before looking for the end of its line, so that a
+      // binary or garbage file fails at its first bytes, not after a scan of all of them.
+      check_keyword(m_text.substr(pos, kKeywordScan), pos + kKeywordScan >= m_text.size());
+      const std::size_t scan = std::min(m_text.size() - pos, kMaxObjLineBytes + 1);
+      const char* nl = static_cast<const char*>(std::memchr(m_text.data() + pos, '\n', scan));
+      if (nl == nullptr && scan > kMaxObjLineBytes) {
+        fail(fmt::format("line longer than {} (not an OBJ file?)", format_bytes(kMaxObjLineBytes)));
+      }
       const std::size_t end = nl ? static_cast<std::size_t>(nl - m_text.data()) : m_text.size();
       parse_line(m_text.substr(pos, end - pos));
       pos = end + 1;
+    }
+    if (m_face_ids.empty()) {
+      throw InputError(
+          fmt::format("{}: no faces ({} vertices and no 'f' line; a mesh needs at "
+                      "least one triangle)",
+                      m_path.string(), num_vertices()));
     }
     if (m_max_forward_index >= 0 && m_max_forward_index >= num_vertices()) {
       fail(m_max_forward_line, fmt::format("face vertex index {} is out of range (the file has {} "
@@ -76,6 +97,39 @@ class ObjParser {
 
   Index num_vertices() const { return static_cast<Index>(m_coords.size() / 3); }
 
+  /// Fails on an unknown statement keyword at the start of `head` (the first bytes of a
+  /// line; `to_file_end` when they are all the file has left). A keyword that does not
+  /// end within `head` is unknown too (every known keyword is shorter).
+  void check_keyword(std::string_view head, bool to_file_end) const {
+    skip_blanks(head);
+    std::size_t n = 0;
+    while (n < head.size() && !is_blank(head[n]) && head[n] != '\n' && head[n] != '#') ++n;
+    if (n == 0 || (n == head.size() && to_file_end)) return;  // parse_line decides
+    if (n < head.size() && is_known_keyword(head.substr(0, n))) return;
+    if (n == head.size()) {  // it goes on: show its start only
+      fail(
+          fmt::format("unknown statement '{}...' (not an OBJ file?)", excerpt(head.substr(0, 10))));
+    }
+    fail(fmt::format("unknown statement '{}'", excerpt(head.substr(0, n))));
+  }
+
+  static bool is_known_keyword(std::string_view keyword) {
+    return keyword == "v" || keyword == "f" || is_ignored_statement(keyword);
+  }
+
+  /// Refuses to grow the arrays beyond the memory budget. Checked before a reallocation:
+  /// the peak is then about 3 times the data (old and doubled buffers; later the vectors
+  /// and the returned mesh together).
+  void check_growth() const {
+    if (m_coords.size() < m_coords.capacity() && m_face_ids.size() < m_face_ids.capacity()) {
+      return;
+    }
+    const double bytes = 3.0 * (static_cast<double>(m_coords.size()) * sizeof(double) +
+                                static_cast<double>(m_face_ids.size()) * sizeof(Index));
+    check_memory_budget(bytes,
+                        fmt::format("{}: line {}: reading the mesh", m_path.string(), m_line));
+  }
+
   void parse_line(std::string_view line) {
     if (const auto hash = line.find('#'); hash != std::string_view::npos) {
       line = line.substr(0, hash);
@@ -87,26 +141,30 @@ class ObjParser {
     } else if (keyword == "f") {
       parse_face(line);
     } else if (!is_ignored_statement(keyword)) {
-      fail(fmt::format("unknown statement '{}'", keyword));
+      fail(fmt::format("unknown statement '{}'", excerpt(keyword)));
     }
   }
 
   void parse_vertex(std::string_view rest) {
     if (num_vertices() == std::numeric_limits<Index>::max()) fail("too many vertices");
+    check_growth();
     for (int axis = 0; axis < 3; ++axis) {
       const std::string_view token = next_token(rest);
       if (token.empty()) fail("vertex has fewer than 3 coordinates");
       double value = 0.0;
       if (!parse_double(token, value)) {
-        fail(fmt::format("garbage token '{}' where a vertex coordinate was expected", token));
+        fail(fmt::format("garbage token '{}' where a vertex coordinate was expected",
+                         excerpt(token)));
       }
-      if (!std::isfinite(value)) fail(fmt::format("non-finite coordinate '{}'", token));
+      if (!std::isfinite(value)) fail(fmt::format("non-finite coordinate '{}'", excerpt(token)));
       m_coords.push_back(value);
     }
     // Optional w or per-vertex colours: must still be numbers.
     for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest)) {
       double value = 0.0;
-      if (!parse_double(token, value)) fail(fmt::format("garbage token '{}' in a vertex", token));
+      if (!parse_double(token, value)) {
+        fail(fmt::format("garbage token '{}' in a vertex", excerpt(token)));
+      }
     }
   }
 
@@ -116,7 +174,8 @@ class ObjParser {
     const std::string_view vertex_part = token.substr(0, slash);
     std::int64_t index = 0;
     if (!parse_int(vertex_part, index)) {
-      fail(fmt::format("garbage token '{}' where a face vertex index was expected", token));
+      fail(
+          fmt::format("garbage token '{}' where a face vertex index was expected", excerpt(token)));
     }
     if (slash != std::string_view::npos) {
       // Texture and normal indices are ignored but must be well formed.
@@ -125,13 +184,15 @@ class ObjParser {
       const std::string_view texture = rest.substr(0, slash2);
       std::int64_t ignored = 0;
       if (!texture.empty() && !parse_int(texture, ignored)) {
-        fail(fmt::format("garbage token '{}' in a face", token));
+        fail(fmt::format("garbage token '{}' in a face", excerpt(token)));
       }
       if (slash2 != std::string_view::npos) {
         const std::string_view normal = rest.substr(slash2 + 1);
-        if (!parse_int(normal, ignored)) fail(fmt::format("garbage token '{}' in a face", token));
+        if (!parse_int(normal, ignored)) {
+          fail(fmt::format("garbage token '{}' in a face", excerpt(token)));
+        }
       } else if (texture.empty()) {
-        fail(fmt::format("garbage token '{}' in a face", token));
+        fail(fmt::format("garbage token '{}' in a face", excerpt(token)));
       }
     }
     if (index == 0) fail("face vertex index 0 is invalid (OBJ indices start at 1)");
@@ -184,6 +245,7 @@ class ObjParser {
         static_cast<std::size_t>(std::numeric_limits<Index>::max())) {
       fail("too many faces");
     }
+    check_growth();
     for (std::size_t i = 1; i + 1 < m_polygon.size(); ++i) {
       m_face_ids.push_back(m_polygon[0]);
       m_face_ids.push_back(m_polygon[i]);
@@ -204,9 +266,13 @@ class ObjParser {
 
 }  // namespace
 
+MeshData parse_obj(std::string_view text, const std::filesystem::path& source) {
+  return ObjParser(source, text).parse();
+}
+
 MeshData read_obj(const std::filesystem::path& path) {
-  const std::string text = read_file_bytes(path);
-  return ObjParser(path, text).parse();
+  const InputFile file(path);
+  return parse_obj(file.bytes(), path);
 }
 
 void write_obj(const std::filesystem::path& path, const Positions& vertices,

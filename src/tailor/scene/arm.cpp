@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "tailor/geometry/error.hpp"
+#include "tailor/io/memory_budget.hpp"
 
 namespace tailor {
 namespace {
@@ -67,6 +68,11 @@ double round_cone_distance(const Vec3& p, const Vec3& a, const Vec3& b, double r
   return (std::sqrt(x2 * a2 * il2) + y * rr) * il2 - ra;
 }
 
+double arm_memory_estimate(const ArmParams& params) {
+  const double rings = static_cast<double>(params.rings) + 1 + 2.0 * (params.cap_rings - 1);
+  return (2 + rings * params.segments) * 4096.0;
+}
+
 Arm::Arm(const ArmParams& params) : m_params(params) {
   check_positive(params.upper_arm_length, "upper_arm_length");
   check_positive(params.forearm_length, "forearm_length");
@@ -85,6 +91,16 @@ Arm::Arm(const ArmParams& params) : m_params(params) {
       std::abs(params.elbow_radius - params.wrist_radius) >= params.forearm_length) {
     throw InputError("arm: radii differ by more than a bone length");
   }
+  // Vertex ids are 32-bit: whatever the budget, stay far from the range's end.
+  if (arm_memory_estimate(params) / 4096.0 > static_cast<double>(std::int64_t{1} << 28)) {
+    throw InputError(
+        fmt::format("arm: resolution too high ({} rings, {} cap rings, {} segments: "
+                    "more than 2^28 vertices)",
+                    params.rings, params.cap_rings, params.segments));
+  }
+  check_memory_budget(arm_memory_estimate(params),
+                      fmt::format("an arm of {} rings, {} cap rings and {} segments", params.rings,
+                                  params.cap_rings, params.segments));
   const double max_r = std::max({params.shoulder_radius, params.elbow_radius, params.wrist_radius});
 
   const ArmSkeleton rest = skeleton(ArmPose{});

@@ -7,13 +7,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 
 #include "tailor/geometry/error.hpp"
+#include "tailor/io/excerpt.hpp"
+#include "tailor/io/json_file.hpp"
+#include "tailor/io/memory_budget.hpp"
 
 namespace tailor {
 namespace {
@@ -57,7 +58,8 @@ class FieldReader {
     if (!is_int) fail_type(path(key), "an integer", *v);
     const double x = v->get<double>();
     if (x < lo || x > hi)
-      fail(path(key), fmt::format("must be an integer in [{}, {}], got {}", lo, hi, v->dump()));
+      fail(path(key),
+           fmt::format("must be an integer in [{}, {}], got {}", lo, hi, json_excerpt(*v)));
     out = static_cast<int>(x);
   }
 
@@ -96,7 +98,8 @@ class FieldReader {
   void finish() const {
     for (auto it = m_object.begin(); it != m_object.end(); ++it) {
       if (m_known.count(it.key()) == 0) {
-        throw InputError(fmt::format("{}: unknown field '{}'", m_source, path(it.key().c_str())));
+        throw InputError(
+            fmt::format("{}: unknown field '{}'", m_source, excerpt(path(it.key().c_str()))));
       }
     }
   }
@@ -114,10 +117,9 @@ class FieldReader {
 
   [[noreturn]] void fail_type(const std::string& field, const char* expected,
                               const json& got) const {
-    std::string shown = got.dump();
-    if (shown.size() > 40) shown = shown.substr(0, 37) + "...";
+    // json_excerpt, not dump(): a value nested 100,000 deep would overflow the stack.
     throw InputError(fmt::format("{}: field '{}' must be {}, got {} {}", m_source, field, expected,
-                                 got.type_name(), shown));
+                                 got.type_name(), json_excerpt(got)));
   }
 
   const json& m_object;
@@ -153,8 +155,8 @@ SceneConfig parse_scene_config(const json& root, const std::string& source) {
     r.string("name", c.gesture.name);
     const auto names = gesture_names();
     if (std::find(names.begin(), names.end(), c.gesture.name) == names.end()) {
-      r.fail("gesture.name",
-             fmt::format("must be one of elbow, raise, twist, got \"{}\"", c.gesture.name));
+      r.fail("gesture.name", fmt::format("must be one of elbow, raise, twist, got \"{}\"",
+                                         excerpt(c.gesture.name)));
     }
     r.number("max_flexion_deg", c.gesture.max_flexion_deg, 0, 160, false);
     r.number("speed", c.gesture.speed, 0, 100);
@@ -212,24 +214,19 @@ SceneConfig parse_scene_config(const json& root, const std::string& source) {
   if (static_cast<std::int64_t>(c.sleeve.rings) * c.sleeve.segments > (std::int64_t{1} << 28)) {
     top.fail("sleeve.rings", "rings × segments exceeds 2^28 vertices");
   }
+  check_memory_budget(sleeve_memory_estimate(c.sleeve) + arm_memory_estimate(c.arm),
+                      fmt::format("{}: the scene's sleeve ({} × {} vertices) and arm ({} rings, "
+                                  "{} cap rings, {} segments)",
+                                  source, c.sleeve.rings, c.sleeve.segments, c.arm.rings,
+                                  c.arm.cap_rings, c.arm.segments));
   return c;
 }
 
 SceneConfig load_scene_config(const std::filesystem::path& path) {
   const std::string source = path.string();
-  std::ifstream in(path, std::ios::binary);
-  if (!in || std::filesystem::is_directory(path)) {
-    throw InputError(fmt::format("cannot open scene file '{}'", source));
-  }
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  json root;
-  try {
-    root = json::parse(buffer.str());
-  } catch (const json::parse_error& e) {
-    throw InputError(fmt::format("{}: malformed JSON: {}", source, e.what()));
-  }
-  return parse_scene_config(root, source);
+  const json root = read_json_file(path);
+  // Whatever nlohmann::json throws while the fields are read becomes an InputError too.
+  return with_json_errors(source, [&] { return parse_scene_config(root, source); });
 }
 
 json scene_config_to_json(const SceneConfig& c) {

@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "tailor/geometry/error.hpp"
+#include "tailor/io/memory_budget.hpp"
 
 namespace tailor {
 
@@ -33,6 +34,10 @@ Positions Sleeve::warp_directions() const {
   return d;
 }
 
+double sleeve_memory_estimate(const SleeveParams& params) {
+  return static_cast<double>(params.rings) * params.segments * 16384.0;
+}
+
 Sleeve make_sleeve(const Arm& arm, const SleeveParams& params) {
   if (params.rings < 2 || params.segments < 3) {
     throw InputError(fmt::format("sleeve resolution too low: rings {} (≥ 2), segments {} (≥ 3)",
@@ -48,6 +53,9 @@ Sleeve make_sleeve(const Arm& arm, const SleeveParams& params) {
   }
   const std::int64_t nv = static_cast<std::int64_t>(params.rings) * params.segments;
   if (nv > (std::int64_t{1} << 30)) throw InputError("sleeve resolution too high");
+  check_memory_budget(sleeve_memory_estimate(params),
+                      fmt::format("a sleeve of {} rings × {} segments ({} vertices)", params.rings,
+                                  params.segments, nv));
 
   Sleeve s;
   s.params = params;
