@@ -6,6 +6,7 @@ packages=(
   g++ cmake make pkg-config
   libeigen3-dev libtbb-dev libfmt-dev libspdlog-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev
+  pybind11-dev python3-dev python3-numpy python3-pytest
 )
 
 missing=()
