@@ -79,32 +79,32 @@ py::tuple ccd_batch(const std::array<py::object, 8>& objects, const Names& names
   return py::make_tuple(hit, toi);
 }
 
+// Defines `name(<8 arrays named names>, *, threads=0)` running ccd_batch.
+template <class Query, CcdResult (*ccd)(const Query&)>
+void def_batch(py::module_& m, const char* name, const Names& names, const char* doc) {
+  m.def(
+      name,
+      [names](py::object x0, py::object x1, py::object x2, py::object x3, py::object x4,
+              py::object x5, py::object x6, py::object x7, int threads) {
+        return ccd_batch<Query, ccd>({x0, x1, x2, x3, x4, x5, x6, x7}, names, threads);
+      },
+      py::arg(names[0]), py::arg(names[1]), py::arg(names[2]), py::arg(names[3]), py::arg(names[4]),
+      py::arg(names[5]), py::arg(names[6]), py::arg(names[7]), py::kw_only(),
+      py::arg("threads") = 0, doc);
+}
+
 }  // namespace
 
 void bind_ccd(py::module_& m) {
-  m.def(
-      "ccd_vertex_face",
-      [](py::object p0, py::object a0, py::object b0, py::object c0, py::object p1, py::object a1,
-         py::object b1, py::object c1, int threads) {
-        return ccd_batch<VertexFaceQuery, &vertex_face_ccd>({p0, a0, b0, c0, p1, a1, b1, c1},
-                                                            kVertexFaceNames, threads);
-      },
-      py::arg("p0"), py::arg("a0"), py::arg("b0"), py::arg("c0"), py::arg("p1"), py::arg("a1"),
-      py::arg("b1"), py::arg("c1"), py::kw_only(), py::arg("threads") = 0,
+  def_batch<VertexFaceQuery, &vertex_face_ccd>(
+      m, "ccd_vertex_face", kVertexFaceNames,
       "Exact vertex-face CCD of n queries: point p against triangle (a, b, c), each an (n, 3) "
       "array at t=0 (p0 ...) and t=1 (p1 ...), moving linearly. Returns (hit, toi): hit[i] is "
       "True when the point meets the closed triangle at some t in [0, 1] (exactly, degenerate "
       "cases included); toi[i] is never later than the first contact (1 when no hit). "
       "float64 C-contiguous arrays are read in place; the GIL is released while it runs.");
-  m.def(
-      "ccd_edge_edge",
-      [](py::object a0, py::object b0, py::object c0, py::object d0, py::object a1, py::object b1,
-         py::object c1, py::object d1, int threads) {
-        return ccd_batch<EdgeEdgeQuery, &edge_edge_ccd>({a0, b0, c0, d0, a1, b1, c1, d1},
-                                                        kEdgeEdgeNames, threads);
-      },
-      py::arg("a0"), py::arg("b0"), py::arg("c0"), py::arg("d0"), py::arg("a1"), py::arg("b1"),
-      py::arg("c1"), py::arg("d1"), py::kw_only(), py::arg("threads") = 0,
+  def_batch<EdgeEdgeQuery, &edge_edge_ccd>(
+      m, "ccd_edge_edge", kEdgeEdgeNames,
       "Exact edge-edge CCD of n queries: edge (a, b) against edge (c, d), each endpoint an "
       "(n, 3) array at t=0 (a0 ...) and t=1 (a1 ...). Returns (hit, toi) as ccd_vertex_face.");
 }
