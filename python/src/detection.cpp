@@ -178,12 +178,14 @@ void bind_detection(py::module_& m) {
       .def_readwrite("radial_view", &DetectionConfig::radial_view)
       .def_readwrite("threads", &DetectionConfig::threads)
       .def("__repr__", [](const DetectionConfig& c) {
+        const auto flag = [](bool on) { return on ? "True" : "False"; };
         return fmt::format(
             "tailor.DetectionConfig(normal_cones={}, contour_test={}, adjacency_culling={}, "
             "feature_assignment={}, primitive_boxes={}, coplanarity_filter={}, radial_view={}, "
             "threads={})",
-            c.normal_cones, c.contour_test, c.adjacency_culling, c.feature_assignment,
-            c.primitive_boxes, c.coplanarity_filter, c.radial_view, c.threads);
+            flag(c.normal_cones), flag(c.contour_test), flag(c.adjacency_culling),
+            flag(c.feature_assignment), flag(c.primitive_boxes), flag(c.coplanarity_filter),
+            flag(c.radial_view), c.threads);
       });
 
   py::class_<PyDetectionResult>(m, "DetectionResult", "The collisions of one step.")
@@ -242,10 +244,11 @@ void bind_detection(py::module_& m) {
       [](py::handle mesh_or_faces, py::handle x0, py::handle x1, py::handle method, int threads,
          py::handle observers) {
         const DetectionConfig config = detection_config(method, threads);
-        const auto rows = static_cast<Index>(float64_rows(x0, "x0").shape(0));
+        const DoubleArray start = float64_rows(x0, "x0");  // converted at most once
         std::vector<std::vector<Index>> loops;
         if (!observers.is_none()) loops = to_index_lists(observers, "observers");
-        PyDetector detector(mesh_from(mesh_or_faces, rows), x0, config, std::move(loops));
+        PyDetector detector(mesh_from(mesh_or_faces, static_cast<Index>(start.shape(0))), start,
+                            config, std::move(loops));
         return detector.detect(py::none(), x1);
       },
       py::arg("mesh"), py::arg("x0"), py::arg("x1"), py::kw_only(), py::arg("method") = "paper",
