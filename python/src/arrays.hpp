@@ -7,7 +7,7 @@
 #include <pybind11/pybind11.h>
 
 #include <cstdint>
-#include <memory>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -67,14 +67,6 @@ py::array adopt(Matrix&& matrix) {
   auto* owned = new std::decay_t<Matrix>(std::forward<Matrix>(matrix));
   py::capsule owner(owned, [](void* p) { delete static_cast<std::decay_t<Matrix>*>(p); });
   return view_of(*owned, owner, true);
-}
-
-/// A NumPy array that takes over `values` (no copy).
-template <class T>
-py::array_t<T> adopt(std::vector<T>&& values) {
-  auto* owned = new std::vector<T>(std::move(values));
-  py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
-  return py::array_t<T>({static_cast<py::ssize_t>(owned->size())}, owned->data(), owner);
 }
 
 }  // namespace tailor::python
