@@ -14,6 +14,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev
   libsuitesparse-dev libpng-dev
   chromium  # the headless browser of tailor view's browser test (tests/view)
+  pybind11-dev python3-dev python3-numpy python3-pytest
 )
 if [ "${1:-}" = "--fuzz" ]; then
   packages+=(clang libclang-rt-14-dev)

@@ -1,0 +1,277 @@
+/// @file
+/// `tailor.detect`, `tailor.brute_force`, `tailor.SelfCollisionDetector`,
+/// `tailor.DetectionConfig` and `tailor.DetectionResult`.
+
+#include <fmt/format.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "json_objects.hpp"
+#include "tailor/detection/brute_force.hpp"
+#include "tailor/detection/self_collision_detector.hpp"
+
+namespace tailor::python {
+namespace {
+
+using MeshPtr = std::shared_ptr<TriangleMesh>;
+
+/// The collisions of a step as NumPy arrays.
+struct PyDetectionResult {
+  py::array vertex_face, edge_edge, edge_ids, toi, vertex_face_toi, edge_edge_toi;
+  py::object stats = py::none();
+  std::size_t size = 0;
+};
+
+PyDetectionResult make_result(const CollisionSet& collisions, const DetectionStats* stats) {
+  const auto nvf = static_cast<py::ssize_t>(collisions.vertex_face.size());
+  const auto nee = static_cast<py::ssize_t>(collisions.edge_edge.size());
+  py::array_t<Index> vf({nvf, py::ssize_t{2}}), ee({nee, py::ssize_t{4}}),
+      ids({nee, py::ssize_t{2}});
+  py::array_t<double> toi(nvf + nee);
+  auto vf_out = vf.mutable_unchecked<2>();
+  auto ee_out = ee.mutable_unchecked<2>();
+  auto ids_out = ids.mutable_unchecked<2>();
+  double* toi_out = toi.mutable_data();
+  for (py::ssize_t i = 0; i < nvf; ++i) {
+    const auto& c = collisions.vertex_face[static_cast<std::size_t>(i)];
+    vf_out(i, 0) = c.vertex;
+    vf_out(i, 1) = c.face;
+    toi_out[i] = c.toi;
+  }
+  for (py::ssize_t i = 0; i < nee; ++i) {
+    const auto& c = collisions.edge_edge[static_cast<std::size_t>(i)];
+    ee_out(i, 0) = c.a0, ee_out(i, 1) = c.a1, ee_out(i, 2) = c.b0, ee_out(i, 3) = c.b1;
+    ids_out(i, 0) = c.edge_a, ids_out(i, 1) = c.edge_b;
+    toi_out[nvf + i] = c.toi;
+  }
+  PyDetectionResult result;
+  result.vertex_face = vf;
+  result.edge_edge = ee;
+  result.edge_ids = ids;
+  result.toi = toi;
+  // Views into `toi` (no copy).
+  result.vertex_face_toi = py::array_t<double>({nvf}, {py::ssize_t{sizeof(double)}}, toi_out, toi);
+  result.edge_edge_toi =
+      py::array_t<double>({nee}, {py::ssize_t{sizeof(double)}}, toi_out + nvf, toi);
+  if (stats != nullptr) result.stats = to_python(nlohmann::json(*stats));
+  result.size = collisions.size();
+  return result;
+}
+
+MeshPtr mesh_from(py::handle mesh_or_faces, Index num_vertices) {
+  if (py::isinstance<TriangleMesh>(mesh_or_faces)) return mesh_or_faces.cast<MeshPtr>();
+  return std::make_shared<TriangleMesh>(num_vertices, to_faces(mesh_or_faces, "faces"));
+}
+
+bool overlaps(const DoubleArray& array, const Positions& buffer) {
+  const double* begin = array.data();
+  const double* end = begin + array.size();
+  return begin < buffer.data() + buffer.size() && buffer.data() < end;
+}
+
+/// A SelfCollisionDetector with the two position buffers it detects on. The C++ API takes
+/// `const Positions&`, so arrays from Python are copied into the buffers, except the
+/// buffers themselves (the `x0`, `x1` views), which are used in place. The buffers are
+/// never reallocated (their row count is the mesh's), so those views stay valid.
+class PyDetector {
+ public:
+  PyDetector(MeshPtr mesh, py::handle x_build, const DetectionConfig& config,
+             std::vector<std::vector<Index>> loops)
+      : m_mesh(std::move(mesh)) {
+    copy_positions(float64_rows(x_build, "x_build"), m_x0);
+    m_x1 = m_x0;  // a step without motion until x1 is given
+    py::gil_scoped_release release;
+    m_detector.emplace(*m_mesh, m_x0, config, std::move(loops));
+  }
+
+  PyDetectionResult detect(py::handle x0, py::handle x1) {
+    Input in0 = take(x0, m_x0, "x0");
+    Input in1 = take(x1, m_x1, "x1");
+    in0.write_to(m_x0);
+    in1.write_to(m_x1);
+    DetectionResult result;
+    {
+      py::gil_scoped_release release;
+      result = m_detector->detect(m_x0, m_x1);
+    }
+    return make_result(result.collisions, &result.stats);
+  }
+
+  Positions& x0() { return m_x0; }
+  Positions& x1() { return m_x1; }
+  const MeshPtr& mesh() const { return m_mesh; }
+  const DetectionConfig& config() const { return m_detector->config(); }
+
+ private:
+  // Positions given for one buffer: nothing to do (absent, or the buffer itself), an array
+  // to copy in, or a copy already taken (when the array overlaps a buffer, so that writing
+  // one buffer cannot change the other input, e.g. x0=det.x1, x1=det.x0).
+  struct Input {
+    std::optional<DoubleArray> array;
+    std::optional<Positions> staged;
+    void write_to(Positions& buffer) const {
+      if (staged) buffer = *staged;  // same size: the storage is reused
+      if (array) copy_positions(*array, buffer);
+    }
+  };
+
+  Input take(py::handle object, const Positions& buffer, const char* name) {
+    Input input;
+    if (object.is_none()) return input;
+    DoubleArray array = float64_rows(object, name);
+    if (array.data() == buffer.data() && array.shape(0) == buffer.rows()) return input;
+    if (array.shape(0) != buffer.rows() || overlaps(array, m_x0) || overlaps(array, m_x1)) {
+      input.staged.emplace();
+      copy_positions(array, *input.staged);
+      if (input.staged->rows() != buffer.rows()) {
+        // The library reports the wrong row count (the same message as the CLI's).
+        const bool first = &buffer == &m_x0;
+        m_detector->detect(first ? *input.staged : m_x0, first ? m_x1 : *input.staged);
+      }
+      return input;
+    }
+    input.array = std::move(array);
+    return input;
+  }
+
+  MeshPtr m_mesh;
+  Positions m_x0, m_x1;
+  std::optional<SelfCollisionDetector> m_detector;
+};
+
+}  // namespace
+
+DetectionConfig detection_config(py::handle method, int threads) {
+  if (threads < 0) throw py::value_error(fmt::format("threads must be ≥ 0, got {}", threads));
+  DetectionConfig config;
+  if (py::isinstance<DetectionConfig>(method)) {
+    config = method.cast<DetectionConfig>();
+    if (threads > 0) config.threads = threads;
+  } else if (py::isinstance<py::str>(method)) {
+    config = DetectionConfig::preset(method.cast<std::string>());
+    config.threads = threads;
+  } else {
+    throw py::value_error("method must be a preset name (str) or a DetectionConfig");
+  }
+  return config;
+}
+
+void bind_detection(py::module_& m) {
+  py::class_<DetectionConfig>(m, "DetectionConfig",
+                              "Switches of every culling stage; every combination reports the "
+                              "same collisions (only the work differs).")
+      .def(py::init<>())
+      .def_static("preset", &DetectionConfig::preset, py::arg("name"),
+                  "basic, curtis, tang or paper (the paper's Table 1 rows).")
+      .def_static("preset_names", &DetectionConfig::preset_names)
+      .def_readwrite("normal_cones", &DetectionConfig::normal_cones)
+      .def_readwrite("contour_test", &DetectionConfig::contour_test)
+      .def_readwrite("adjacency_culling", &DetectionConfig::adjacency_culling)
+      .def_readwrite("feature_assignment", &DetectionConfig::feature_assignment)
+      .def_readwrite("primitive_boxes", &DetectionConfig::primitive_boxes)
+      .def_readwrite("coplanarity_filter", &DetectionConfig::coplanarity_filter)
+      .def_readwrite("radial_view", &DetectionConfig::radial_view)
+      .def_readwrite("threads", &DetectionConfig::threads)
+      .def("__repr__", [](const DetectionConfig& c) {
+        const auto flag = [](bool on) { return on ? "True" : "False"; };
+        return fmt::format(
+            "tailor.DetectionConfig(normal_cones={}, contour_test={}, adjacency_culling={}, "
+            "feature_assignment={}, primitive_boxes={}, coplanarity_filter={}, radial_view={}, "
+            "threads={})",
+            flag(c.normal_cones), flag(c.contour_test), flag(c.adjacency_culling),
+            flag(c.feature_assignment), flag(c.primitive_boxes), flag(c.coplanarity_filter),
+            flag(c.radial_view), c.threads);
+      });
+
+  py::class_<PyDetectionResult>(m, "DetectionResult", "The collisions of one step.")
+      .def_readonly("vertex_face", &PyDetectionResult::vertex_face,
+                    "(n, 2) int32: vertex id, face id; sorted.")
+      .def_readonly(
+          "edge_edge", &PyDetectionResult::edge_edge,
+          "(m, 4) int32: a0, a1, b0, b1 with a0 < a1, b0 < b1, (a0, a1) < (b0, b1); sorted.")
+      .def_readonly("edge_ids", &PyDetectionResult::edge_ids,
+                    "(m, 2) int32: the two edges of each edge_edge row as ids in Mesh.edges.")
+      .def_readonly("toi", &PyDetectionResult::toi,
+                    "(n + m,) float64: times of impact, vertex-face rows first, then edge-edge; "
+                    "each never later than the first contact.")
+      .def_readonly("vertex_face_toi", &PyDetectionResult::vertex_face_toi, "toi[:n] (a view)")
+      .def_readonly("edge_edge_toi", &PyDetectionResult::edge_edge_toi, "toi[n:] (a view)")
+      .def_readonly("stats", &PyDetectionResult::stats,
+                    "Per-stage counts and times (ms) as a dict; None for brute_force.")
+      .def("__len__", [](const PyDetectionResult& r) { return r.size; })
+      .def("__repr__", [](const PyDetectionResult& r) {
+        return fmt::format("tailor.DetectionResult({} vertex-face, {} edge-edge)",
+                           r.vertex_face.shape(0), r.edge_edge.shape(0));
+      });
+
+  py::class_<PyDetector>(m, "SelfCollisionDetector",
+                         "Finds every self-collision of a deforming mesh over linear steps; "
+                         "built once per topology, then detect() for each step.")
+      .def(py::init([](MeshPtr mesh, py::handle x_build, py::handle method, int threads,
+                       py::handle observers) {
+             std::vector<std::vector<Index>> loops;
+             if (!observers.is_none()) loops = to_index_lists(observers, "observers");
+             return std::make_unique<PyDetector>(
+                 std::move(mesh), x_build, detection_config(method, threads), std::move(loops));
+           }),
+           py::arg("mesh"), py::arg("x_build"), py::kw_only(), py::arg("method") = "paper",
+           py::arg("threads") = 0, py::arg("observers") = py::none(),
+           "`x_build`: (n, 3) positions the BVH is built on (usually the first frame). "
+           "`method`: a preset name or a DetectionConfig; `threads`: 0 = all cores; "
+           "`observers`: section loops (lists of vertex ids) for radial-view culling.")
+      .def("detect", &PyDetector::detect, py::arg("x0") = py::none(), py::arg("x1") = py::none(),
+           "Every vertex-face and edge-edge pair that touches while vertices move linearly from "
+           "x0 to x1 ((n, 3) arrays). An omitted argument, or the detector's own `x0`/`x1` "
+           "array, is used in place (no copy); other arrays are copied into those buffers. "
+           "The GIL is released while it runs.")
+      .def_property_readonly(
+          "x0", [](py::object self) { return view_of(self.cast<PyDetector&>().x0(), self, true); },
+          "The start positions detect() uses: a writable (n, 3) view (fill it in place to "
+          "avoid a copy).")
+      .def_property_readonly(
+          "x1", [](py::object self) { return view_of(self.cast<PyDetector&>().x1(), self, true); },
+          "The end positions detect() uses: a writable (n, 3) view.")
+      .def_property_readonly("mesh", &PyDetector::mesh)
+      .def_property_readonly("config", &PyDetector::config);
+
+  m.def(
+      "detect",
+      [](py::handle mesh_or_faces, py::handle x0, py::handle x1, py::handle method, int threads,
+         py::handle observers) {
+        const DetectionConfig config = detection_config(method, threads);
+        const DoubleArray start = float64_rows(x0, "x0");  // converted at most once
+        std::vector<std::vector<Index>> loops;
+        if (!observers.is_none()) loops = to_index_lists(observers, "observers");
+        PyDetector detector(mesh_from(mesh_or_faces, static_cast<Index>(start.shape(0))), start,
+                            config, std::move(loops));
+        return detector.detect(py::none(), x1);
+      },
+      py::arg("mesh"), py::arg("x0"), py::arg("x1"), py::kw_only(), py::arg("method") = "paper",
+      py::arg("threads") = 0, py::arg("observers") = py::none(),
+      "Every self-collision of one step: `mesh` is a Mesh or (m, 3) faces; x0, x1 are (n, 3) "
+      "positions at the start and end. For many steps of one mesh, use SelfCollisionDetector.");
+
+  m.def(
+      "brute_force",
+      [](py::handle mesh_or_faces, py::handle x0, py::handle x1) {
+        const Positions p0 = to_positions(x0, "x0");
+        const Positions p1 = to_positions(x1, "x1");
+        const MeshPtr mesh = mesh_from(mesh_or_faces, static_cast<Index>(p0.rows()));
+        CollisionSet collisions;
+        {
+          py::gil_scoped_release release;
+          collisions = brute_force_self_collisions(*mesh, p0, p1);
+        }
+        return make_result(collisions, nullptr);
+      },
+      py::arg("mesh"), py::arg("x0"), py::arg("x1"),
+      "The oracle: every non-incident vertex-face and edge-edge pair through the exact CCD "
+      "(usable up to ~20K triangles).");
+}
+
+}  // namespace tailor::python
