@@ -14,8 +14,9 @@ namespace tailor {
 /// Which stage of the CCD decided a query.
 enum class CcdPath : std::uint8_t {
   filter,            ///< the certified non-coplanarity (Bernstein sign) filter
-  double_precision,  ///< the double path with a certified error bound
-  exact,             ///< the exact rational fallback
+  double_precision,  ///< the double tier with certified error bounds
+  exact,             ///< the exact tier on fixed-size integers (no heap, no GMP)
+  gmp,               ///< the exact tier's last resort on GMP integers (numbers too wide)
 };
 
 /// The answer for one query.

@@ -1,0 +1,239 @@
+#pragma once
+/// @file
+/// Exact signed integers of at most N 64-bit limbs, on the stack (no heap, no GMP): the
+/// number type of the exact CCD tier. Sign-magnitude with a used-limb count, so small
+/// values cost little whatever N is. A result that does not fit in N limbs throws
+/// CapacityExceeded; the exact tier then reruns the query with GMP integers (BigInt),
+/// which implement the same interface. Internal to the ccd module.
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
+namespace tailor::detail {
+
+/// Thrown by FixedInt when a result needs more limbs than it has.
+struct CapacityExceeded {};
+
+__extension__ using Limb2 = unsigned __int128;
+
+/// A signed integer |x| < 2^(64 N).
+template <int N>
+class FixedInt {
+ public:
+  static_assert(N >= 2);
+  /// Results beyond the capacity throw CapacityExceeded.
+  static constexpr bool kBounded = true;
+
+  FixedInt() = default;
+  FixedInt(std::int64_t v) {  // NOLINT(google-explicit-constructor): integers convert
+    if (v != 0) {
+      m_size = 1;
+      m_negative = v < 0;
+      m_limb[0] = v < 0 ? ~static_cast<std::uint64_t>(v) + 1 : static_cast<std::uint64_t>(v);
+    }
+  }
+  // Copies move only the used limbs (a plain loop: sizes are small).
+  FixedInt(const FixedInt& o) : m_size(o.m_size), m_negative(o.m_negative) {
+    for (int i = 0; i < m_size; ++i) m_limb[i] = o.m_limb[i];
+  }
+  FixedInt& operator=(const FixedInt& o) {
+    m_size = o.m_size;
+    m_negative = o.m_negative;
+    for (int i = 0; i < m_size; ++i) m_limb[i] = o.m_limb[i];
+    return *this;
+  }
+
+  /// mantissa 2^shift (shift >= 0), negated when `negative`.
+  static FixedInt scaled(std::uint64_t mantissa, int shift, bool negative) {
+    FixedInt r;
+    if (mantissa == 0) return r;
+    const int word = shift / 64, bit = shift % 64;
+    const std::uint64_t spill = bit == 0 ? 0 : mantissa >> (64 - bit);
+    const int size = word + 1 + (spill != 0 ? 1 : 0);
+    if (size > N) throw CapacityExceeded{};
+    for (int i = 0; i < word; ++i) r.m_limb[i] = 0;
+    r.m_limb[word] = mantissa << bit;
+    if (spill != 0) r.m_limb[word + 1] = spill;
+    r.m_size = size;
+    r.m_negative = negative;
+    return r;
+  }
+
+  /// -1, 0 or 1.
+  int sign() const { return m_size == 0 ? 0 : (m_negative ? -1 : 1); }
+  bool is_zero() const { return m_size == 0; }
+
+  /// Number of bits of |x| (0 for zero).
+  int bit_length() const {
+    return m_size == 0 ? 0 : 64 * (m_size - 1) + 64 - std::countl_zero(m_limb[m_size - 1]);
+  }
+
+  /// x ≈ m 2^e with |x - m 2^e| <= 2^-52 |m 2^e|; m = 0 for zero. Never overflows (the
+  /// exponent is returned separately).
+  double approximate(int& e) const {
+    if (m_size == 0) {
+      e = 0;
+      return 0.0;
+    }
+    // The top two limbs (or one): at most two roundings and the dropped lower limbs.
+    const std::uint64_t hi = m_limb[m_size - 1];
+    const std::uint64_t lo = m_size >= 2 ? m_limb[m_size - 2] : 0;
+    const Limb2 top = (static_cast<Limb2>(hi) << 64) | lo;
+    const int z = std::countl_zero(hi);  // normalise so that the top bit is bit 127
+    const Limb2 norm = top << z;
+    // Truncating to the top 64 bits (relative error < 2^-63, the dropped limbs < 2^-64),
+    // then rounding to double (<= 2^-53): < 2^-52 relative overall.
+    const auto high64 = static_cast<std::uint64_t>(norm >> 64);
+    e = 64 * (m_size - 2) + 64 - z;
+    const double m = static_cast<double>(high64);
+    return m_negative ? -m : m;
+  }
+
+  FixedInt operator-() const {
+    FixedInt r(*this);
+    if (r.m_size != 0) r.m_negative = !r.m_negative;
+    return r;
+  }
+
+  friend FixedInt operator+(const FixedInt& a, const FixedInt& b) {
+    return a.m_negative == b.m_negative ? add_magnitudes(a, b, a.m_negative)
+                                        : subtract_signed(a, b, b.m_negative);
+  }
+  friend FixedInt operator-(const FixedInt& a, const FixedInt& b) {
+    return a.m_negative != b.m_negative ? add_magnitudes(a, b, a.m_negative)
+                                        : subtract_signed(a, b, !b.m_negative);
+  }
+  friend FixedInt operator*(const FixedInt& a, const FixedInt& b) {
+    FixedInt r;
+    if (a.m_size == 0 || b.m_size == 0) return r;
+    r.m_negative = a.m_negative != b.m_negative;
+    if (a.m_size == 1 && b.m_size == 1) {  // the common case: one 64x64 -> 128 product
+      const Limb2 t = static_cast<Limb2>(a.m_limb[0]) * b.m_limb[0];
+      r.m_limb[0] = static_cast<std::uint64_t>(t);
+      r.m_limb[1] = static_cast<std::uint64_t>(t >> 64);
+      r.m_size = r.m_limb[1] != 0 ? 2 : 1;
+      return r;
+    }
+    const int n = a.m_size + b.m_size;
+    if (n - 1 > N) throw CapacityExceeded{};
+    std::uint64_t out[2 * N];
+    for (int i = 0; i < n; ++i) out[i] = 0;
+    for (int i = 0; i < a.m_size; ++i) {
+      std::uint64_t carry = 0;
+      const Limb2 ai = a.m_limb[i];
+      for (int j = 0; j < b.m_size; ++j) {
+        const Limb2 t = ai * b.m_limb[j] + out[i + j] + carry;
+        out[i + j] = static_cast<std::uint64_t>(t);
+        carry = static_cast<std::uint64_t>(t >> 64);
+      }
+      out[i + b.m_size] = carry;
+    }
+    int size = n;
+    while (size > 0 && out[size - 1] == 0) --size;
+    if (size > N) throw CapacityExceeded{};
+    for (int i = 0; i < size; ++i) r.m_limb[i] = out[i];
+    r.m_size = size;
+    return r;
+  }
+  FixedInt& operator+=(const FixedInt& b) { return *this = *this + b; }
+  FixedInt& operator-=(const FixedInt& b) { return *this = *this - b; }
+  FixedInt& operator*=(const FixedInt& b) { return *this = *this * b; }
+
+  /// x 2^bits (bits >= 0).
+  FixedInt shifted(int bits) const {
+    FixedInt r;
+    if (m_size == 0) return r;
+    const int word = bits / 64, bit = bits % 64;
+    int size = m_size + word;
+    const std::uint64_t spill = bit == 0 ? 0 : m_limb[m_size - 1] >> (64 - bit);
+    if (spill != 0) ++size;
+    if (size > N) throw CapacityExceeded{};
+    for (int i = 0; i < word; ++i) r.m_limb[i] = 0;
+    if (bit == 0) {
+      for (int i = 0; i < m_size; ++i) r.m_limb[i + word] = m_limb[i];
+    } else {
+      std::uint64_t carry = 0;
+      for (int i = 0; i < m_size; ++i) {
+        r.m_limb[i + word] = (m_limb[i] << bit) | carry;
+        carry = m_limb[i] >> (64 - bit);
+      }
+      if (spill != 0) r.m_limb[m_size + word] = spill;
+    }
+    r.m_size = size;
+    r.m_negative = m_negative;
+    return r;
+  }
+
+  /// Sign of a - b.
+  friend int compare(const FixedInt& a, const FixedInt& b) { return (a - b).sign(); }
+  friend bool operator==(const FixedInt& a, const FixedInt& b) {
+    if (a.m_size != b.m_size || a.m_negative != b.m_negative) return false;
+    for (int i = 0; i < a.m_size; ++i) {
+      if (a.m_limb[i] != b.m_limb[i]) return false;
+    }
+    return true;
+  }
+
+ private:
+  /// Sign of |a| - |b|.
+  static int compare_magnitudes(const FixedInt& a, const FixedInt& b) {
+    if (a.m_size != b.m_size) return a.m_size < b.m_size ? -1 : 1;
+    for (int i = a.m_size - 1; i >= 0; --i) {
+      if (a.m_limb[i] != b.m_limb[i]) return a.m_limb[i] < b.m_limb[i] ? -1 : 1;
+    }
+    return 0;
+  }
+
+  /// |a| + |b| with the given sign.
+  static FixedInt add_magnitudes(const FixedInt& a, const FixedInt& b, bool negative) {
+    const FixedInt& big = a.m_size >= b.m_size ? a : b;
+    const FixedInt& small = a.m_size >= b.m_size ? b : a;
+    FixedInt r;
+    std::uint64_t carry = 0;
+    for (int i = 0; i < big.m_size; ++i) {
+      const Limb2 t = static_cast<Limb2>(big.m_limb[i]) + (i < small.m_size ? small.m_limb[i] : 0) +
+                      carry;
+      r.m_limb[i] = static_cast<std::uint64_t>(t);
+      carry = static_cast<std::uint64_t>(t >> 64);
+    }
+    r.m_size = big.m_size;
+    if (carry != 0) {
+      if (r.m_size == N) throw CapacityExceeded{};
+      r.m_limb[r.m_size++] = carry;
+    }
+    r.m_negative = r.m_size != 0 && negative;
+    return r;
+  }
+
+  /// |a| - |b| where a has sign `a.m_negative` and b enters with sign `b_negative`
+  /// opposite to a's: the result is a + b.
+  static FixedInt subtract_signed(const FixedInt& a, const FixedInt& b, bool b_negative) {
+    const int c = compare_magnitudes(a, b);
+    if (c == 0) return FixedInt();
+    const FixedInt& big = c > 0 ? a : b;
+    const FixedInt& small = c > 0 ? b : a;
+    FixedInt r;
+    std::uint64_t borrow = 0;
+    for (int i = 0; i < big.m_size; ++i) {
+      const std::uint64_t s = i < small.m_size ? small.m_limb[i] : 0;
+      const std::uint64_t d1 = big.m_limb[i] - s;
+      const std::uint64_t b1 = big.m_limb[i] < s;
+      const std::uint64_t d2 = d1 - borrow;
+      const std::uint64_t b2 = d1 < borrow;
+      r.m_limb[i] = d2;
+      borrow = b1 | b2;
+    }
+    int size = big.m_size;
+    while (size > 0 && r.m_limb[size - 1] == 0) --size;
+    r.m_size = size;
+    r.m_negative = c > 0 ? a.m_negative : b_negative;
+    return r;
+  }
+
+  std::uint64_t m_limb[N];
+  int m_size = 0;
+  bool m_negative = false;
+};
+
+}  // namespace tailor::detail
