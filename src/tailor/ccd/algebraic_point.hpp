@@ -412,6 +412,15 @@ int sign_at(const Poly<Z>& q, RootPoint<Z>& r) {
   return 0;
 }
 
+/// True iff q(r) = 0, for an isolated root r (gcd test only, no narrowing): the cheap
+/// exact check for a value the ball test could not separate from zero.
+template <class Z>
+bool vanishes_at_isolated(const Poly<Z>& q, const RootPoint<Z>& r) {
+  if (q.deg <= 0) return q.deg < 0;
+  const Poly<Z> g = algebraic_detail::gcd(r.poly, q);
+  return g.deg >= 1 && sign_at(g, r.lo) * sign_at(g, r.hi) < 0;
+}
+
 /// Sign of q just right of r (q's first nonvanishing derivative at r).
 template <class Z>
 int right_sign(const Poly<Z>& q, RootPoint<Z>& r) {

@@ -7,7 +7,10 @@
 /// double tier evaluates its conditions with. Internal to the ccd module.
 ///
 /// Why the radii are safe: for a result x computed as fl(x), round-to-nearest gives
-/// |fl(x) - x| <= u |fl(x)| + eta (u = 2^-53; eta = 2^-1074 covers underflow in products).
+/// |fl(x) - x| <= u |fl(x)| + eta (u = 2^-53; any eta >= 2^-1075 covers underflow in
+/// products). eta is 2^-600, not the smallest subnormal: radii that start at zero then stay
+/// normal numbers, because arithmetic on subnormals is two orders of magnitude slower; the
+/// only cost is that quantities below ~2^-600 are never certified (the exact tier decides).
 /// Each radius adds such terms to the operands' radii; it is itself a sum of at most eight
 /// rounded nonnegative terms, so multiplying it by kInflate = 1 + 2^-48 (>= (1 - u)^-9)
 /// makes it an upper bound of its exact value. Overflow gives inf or NaN, and every sign
@@ -37,7 +40,7 @@ struct Ball {
 };
 
 inline constexpr double kBallU = 0x1p-53;
-inline constexpr double kBallEta = 0x1p-1074;
+inline constexpr double kBallEta = 0x1p-600;
 inline constexpr double kBallInflate = 1.0 + 0x1p-48;
 
 inline Ball operator+(const Ball& a, const Ball& b) {

@@ -26,6 +26,22 @@ bool never_coplanar(const detail::CoplanarityBernstein& f) {
 
 }  // namespace
 
+const char* ccd_path_name(CcdPath path) {
+  switch (path) {
+    case CcdPath::filter:
+      return "filter";
+    case CcdPath::double_precision:
+      return "double";
+    case CcdPath::exact_signs:
+      return "exact_signs";
+    case CcdPath::exact:
+      return "exact";
+    case CcdPath::gmp:
+      return "gmp";
+  }
+  return "?";
+}
+
 CcdResult vertex_face_ccd(const VertexFaceQuery& q) {
   const detail::CoplanarityBernstein f = detail::coplanarity_bernstein(q);
   if (never_coplanar(f)) return {false, 1.0, CcdPath::filter};

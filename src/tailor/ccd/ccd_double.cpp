@@ -35,6 +35,7 @@ constexpr double kToiWidth = 0x1p-22;
 
 /// f's Bernstein coefficients on [0, 1] and a bound on their errors.
 struct Cubic {
+  bool zero = false;  // every term of every coefficient is exactly zero: f == 0
   double b[4];
   double error;      // |computed - exact| <= error for every coefficient at the root
   double magnitude;  // >= |every exact Bernstein coefficient on any subinterval|
@@ -121,39 +122,70 @@ int certain_axis(const BV& v) {
 
 enum class Verdict { outside, inside, unknown };
 
+/// A root of f certified in [lo, hi] (sign_lo: f's sign at lo): what the exact assist
+/// needs to settle the signs the balls leave open.
+struct RootBracket {
+  double lo, hi;
+  int sign_lo;
+  mutable bool used_exact = false;  // set when the exact assist decided a sign
+};
+
 /// VF projected test over every coplanar instant in the ball t: certainly no contact
-/// (outside), certainly p strictly inside the nondegenerate triangle (inside), or unknown.
-Verdict vf_verdict(const Motion& motion, const Ball& t) {
+/// (outside), certainly a contact (inside), or unknown. With a root bracket, signs the
+/// balls cannot separate from zero are settled exactly (vertex_face_signs_at_root).
+Verdict vf_verdict(const Motion& motion, const Ball& t, const VertexFaceQuery* query = nullptr,
+                   const RootBracket* root = nullptr) {
   const auto [u, v, w] = motion.at(t);  // b - a, c - a, p - a
   const BV n = cross(u, v);
   const int k = certain_axis(n);
   if (k < 0) return Verdict::unknown;
   const int s = component(n, k).sign();
   const BV zero{Ball(0.0), Ball(0.0), Ball(0.0)};
-  const int e[3] = {cross_component(u, w, k).sign(), cross_component(v - u, w - u, k).sign(),
-                    cross_component(zero - v, w - v, k).sign()};
-  bool inside = true;
-  for (int x : e) {
-    if (x * s < 0) return Verdict::outside;
-    inside &= x * s > 0;
+  int e[3] = {cross_component(u, w, k).sign(), cross_component(v - u, w - u, k).sign(),
+              cross_component(zero - v, w - v, k).sign()};
+  int open[3], count = 0;
+  for (int i = 0; i < 3; ++i) {
+    if (e[i] * s < 0) return Verdict::outside;
+    if (e[i] == 0) open[count++] = i + 1;
   }
-  return inside ? Verdict::inside : Verdict::unknown;
+  if (count == 0) return Verdict::inside;
+  if (root == nullptr) return Verdict::unknown;
+  int exact[3];
+  if (!vertex_face_signs_at_root(*query, k, open, count, root->lo, root->hi, root->sign_lo, exact)) {
+    return Verdict::unknown;
+  }
+  root->used_exact = true;
+  for (int i = 0; i < count; ++i) {
+    if (exact[i] * s < 0) return Verdict::outside;
+  }
+  return Verdict::inside;  // every edge orientation agrees with n_k or vanishes
 }
 
-/// EE projected test: certainly apart, certainly crossing at interior points, or unknown.
-Verdict ee_verdict(const Motion& motion, const Ball& t) {
+/// EE projected test: certainly apart, certainly meeting, or unknown (see vf_verdict).
+Verdict ee_verdict(const Motion& motion, const Ball& t, const EdgeEdgeQuery* query = nullptr,
+                   const RootBracket* root = nullptr) {
   const auto [u, v, w] = motion.at(t);  // b - a, c - a, d - a
   const BV dc = w - v;
   const BV m = cross(u, dc);
   const int k = certain_axis(m);
   if (k < 0) return Verdict::unknown;
   const BV zero{Ball(0.0), Ball(0.0), Ball(0.0)};
-  const int abc = cross_component(u, v, k).sign(), abd = cross_component(u, w, k).sign();
-  const int cda = cross_component(dc, zero - v, k).sign(),
-            cdb = cross_component(dc, u - v, k).sign();
-  if (abc * abd > 0 || cda * cdb > 0) return Verdict::outside;
-  if (abc * abd < 0 && cda * cdb < 0) return Verdict::inside;
-  return Verdict::unknown;
+  int o[4] = {cross_component(u, v, k).sign(), cross_component(u, w, k).sign(),
+              cross_component(dc, zero - v, k).sign(), cross_component(dc, u - v, k).sign()};
+  if (o[0] * o[1] > 0 || o[2] * o[3] > 0) return Verdict::outside;
+  if (o[0] * o[1] < 0 && o[2] * o[3] < 0) return Verdict::inside;
+  if (root == nullptr) return Verdict::unknown;
+  int open[4], count = 0;
+  for (int i = 0; i < 4; ++i) {
+    if (o[i] == 0) open[count++] = i + 1;
+  }
+  int exact[4];
+  if (!edge_edge_signs_at_root(*query, k, open, count, root->lo, root->hi, root->sign_lo, exact)) {
+    return Verdict::unknown;
+  }
+  root->used_exact = true;
+  for (int i = 0; i < count; ++i) o[open[i] - 1] = exact[i];
+  return o[0] * o[1] <= 0 && o[2] * o[3] <= 0 ? Verdict::inside : Verdict::outside;
 }
 
 /// A bracket [t_a, t_b] inside the isolating node where f certainly changes sign, at most
@@ -199,12 +231,50 @@ int certain_sign(double c, double err) {
   return c > err ? 1 : (c < -err ? -1 : 0);
 }
 
-/// The tier on one query: `verdict(t)` is vf_verdict or ee_verdict.
+/// f == 0: every instant is coplanar. Left-first subdivision of [0, 1] by the projected
+/// test: a node where no instant can be a contact is skipped; a contact certain at a node's
+/// start (or at its end, once the node is narrower than kToiWidth) is the earliest, since
+/// everything before was skipped.
+template <class VerdictFn>
+std::optional<CcdResult> decide_coplanar(VerdictFn&& verdict) {
+  struct Span {
+    double t1, t2;
+    int depth;
+  };
+  constexpr int kMaxCoplanarDepth = 6, kMaxNodes = 12;
+  Span stack[kMaxCoplanarDepth + 2];
+  int top = 0, nodes = 0;
+  stack[top++] = Span{0.0, 1.0, 0};
+  while (top > 0) {
+    const Span n = stack[--top];
+    if (++nodes > kMaxNodes) return std::nullopt;
+    if (verdict(ball_hull(n.t1, n.t2), nullptr) == Verdict::outside) continue;
+    if (verdict(Ball(n.t1), nullptr) == Verdict::inside) {
+      return CcdResult{true, n.t1, CcdPath::double_precision};
+    }
+    if (n.t2 - n.t1 <= kToiWidth) {
+      if (verdict(Ball(n.t2), nullptr) == Verdict::inside) {
+        return CcdResult{true, n.t1, CcdPath::double_precision};
+      }
+      return std::nullopt;
+    }
+    if (n.depth >= kMaxCoplanarDepth) return std::nullopt;
+    const double tm = 0.5 * (n.t1 + n.t2);
+    stack[top++] = Span{tm, n.t2, n.depth + 1};
+    stack[top++] = Span{n.t1, tm, n.depth + 1};
+  }
+  return CcdResult{false, 1.0, CcdPath::double_precision};
+}
+
+/// The tier on one query: `verdict(t, root)` is vf_verdict or ee_verdict (root: the
+/// certified bracket when t is one, else null).
 template <class VerdictFn>
 std::optional<CcdResult> decide(const Cubic& f, VerdictFn&& verdict) {
+  if (f.zero) return decide_coplanar(verdict);
   Node stack[kMaxDepth + 2];
   int top = 0;
   stack[top++] = Node{0.0, 1.0, 0, {f.b[0], f.b[1], f.b[2], f.b[3]}};
+  bool used_exact = false;
   while (top > 0) {
     const Node n = stack[--top];
     // Error of the node's coefficients: three averaging levels per split.
@@ -223,8 +293,11 @@ std::optional<CcdResult> decide(const Cubic& f, VerdictFn&& verdict) {
       // One simple root: decide the conditions across a narrow bracket around it.
       const auto bracket = bracket_root(f, n, s[0]);
       if (!bracket) return std::nullopt;
-      const Verdict v = verdict(ball_hull((*bracket)[0], (*bracket)[1]));
-      if (v == Verdict::inside) return CcdResult{true, (*bracket)[0], CcdPath::double_precision};
+      const RootBracket root{(*bracket)[0], (*bracket)[1], s[0]};
+      const Verdict v = verdict(ball_hull(root.lo, root.hi), &root);
+      used_exact |= root.used_exact;
+      const CcdPath path = used_exact ? CcdPath::exact_signs : CcdPath::double_precision;
+      if (v == Verdict::inside) return CcdResult{true, root.lo, path};
       if (v == Verdict::outside) continue;
       return std::nullopt;
     }
@@ -232,7 +305,7 @@ std::optional<CcdResult> decide(const Cubic& f, VerdictFn&& verdict) {
     // coplanar instant in it can be a contact; if p may be inside throughout, only the
     // exact tier can tell whether f vanishes there.
     if (n.depth >= 2 || !all_certain) {
-      const Verdict v = verdict(ball_hull(n.t1, n.t2));
+      const Verdict v = verdict(ball_hull(n.t1, n.t2), nullptr);
       if (v == Verdict::outside) continue;
       if (v == Verdict::inside && !all_certain) return std::nullopt;
     }
@@ -245,7 +318,7 @@ std::optional<CcdResult> decide(const Cubic& f, VerdictFn&& verdict) {
     stack[top++] = Node{tm, n.t2, n.depth + 1, {mid, c123, c23, c[3]}};
     stack[top++] = Node{n.t1, tm, n.depth + 1, {c[0], c01, c012, mid}};
   }
-  return CcdResult{false, 1.0, CcdPath::double_precision};
+  return CcdResult{false, 1.0, used_exact ? CcdPath::exact_signs : CcdPath::double_precision};
 }
 
 /// f's coefficients from the filter's values (value[1], value[2] are 3 b1, 3 b2).
@@ -263,9 +336,8 @@ std::optional<Cubic> make_cubic(const CoplanarityBernstein& filter) {
     error = std::max(error, e);
     magnitude = std::max(magnitude, std::fabs(f.b[i]));
   }
-  // Every term exactly zero: f is identically zero (coplanar for the whole step); the
-  // exact tier handles that case.
-  if (error == 0.0 && magnitude == 0.0) return std::nullopt;
+  // Every term exactly zero: f is identically zero (coplanar for the whole step).
+  f.zero = error == 0.0 && magnitude == 0.0;
   f.error = error * kBallInflate;
   f.magnitude = (magnitude + f.error) * kBallInflate;
   if (!std::isfinite(f.magnitude)) return std::nullopt;
@@ -295,7 +367,9 @@ std::optional<CcdResult> vertex_face_ccd_double(const VertexFaceQuery& q,
   const Vec3* t0[4] = {&q.a_t0, &q.b_t0, &q.c_t0, &q.p_t0};
   const Vec3* t1[4] = {&q.a_t1, &q.b_t1, &q.c_t1, &q.p_t1};
   const Motion motion = make_motion(t0, t1);
-  return decide(*f, [&](const Ball& t) { return vf_verdict(motion, t); });
+  return decide(*f, [&](const Ball& t, const RootBracket* root) {
+    return vf_verdict(motion, t, &q, root);
+  });
 }
 
 std::optional<CcdResult> edge_edge_ccd_double(const EdgeEdgeQuery& q,
@@ -305,7 +379,9 @@ std::optional<CcdResult> edge_edge_ccd_double(const EdgeEdgeQuery& q,
   const Vec3* t0[4] = {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0};
   const Vec3* t1[4] = {&q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1};
   const Motion motion = make_motion(t0, t1);
-  return decide(*f, [&](const Ball& t) { return ee_verdict(motion, t); });
+  return decide(*f, [&](const Ball& t, const RootBracket* root) {
+    return ee_verdict(motion, t, &q, root);
+  });
 }
 
 std::optional<CcdResult> vertex_face_ccd_double(const VertexFaceQuery& q) {

@@ -103,7 +103,56 @@ CcdResult edge_edge_with(const EdgeEdgeQuery& q, CcdPath path) {
   return to_result(earliest_contact<Z>(s), path);
 }
 
+/// Exact signs of the listed conditions at the root of s.f in (lo, hi).
+template <class Z, class Polys, class Condition>
+void signs_at_root(const Polys& s, Condition&& condition, const int* which, int count, double lo,
+                   double hi, int sign_lo, int* signs) {
+  RootPoint<Z> r = RootPoint<Z>::isolated(s.f, Dyadic<Z>::from_double(lo),
+                                          Dyadic<Z>::from_double(hi), sign_lo);
+  for (int i = 0; i < count; ++i) {
+    const Poly<Z>& q = condition(which[i]);
+    // The double tier could not separate these from zero: test for zero first.
+    signs[i] = r.kind == RootPoint<Z>::Kind::isolated && vanishes_at_isolated(q, r) ? 0 : sign_at(q, r);
+  }
+}
+
 }  // namespace
+
+bool vertex_face_signs_at_root(const VertexFaceQuery& q, int axis, const int* which, int count,
+                               double lo, double hi, int sign_lo, int* signs) {
+  try {
+    const auto rel = relative_polys<Fixed>(
+        {&q.a_t0, &q.b_t0, &q.c_t0, &q.p_t0, &q.a_t1, &q.b_t1, &q.c_t1, &q.p_t1});
+    const VfPolys<Fixed> s(rel[0], rel[1], rel[2]);
+    signs_at_root<Fixed>(
+        s,
+        [&](int c) -> const Poly<Fixed>& {
+          return c == 0 ? component(s.n, axis) : s.edge(c - 1, axis);
+        },
+        which, count, lo, hi, sign_lo, signs);
+    return true;
+  } catch (const CapacityExceeded&) {
+    return false;
+  }
+}
+
+bool edge_edge_signs_at_root(const EdgeEdgeQuery& q, int axis, const int* which, int count,
+                             double lo, double hi, int sign_lo, int* signs) {
+  try {
+    const auto rel = relative_polys<Fixed>(
+        {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0, &q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1});
+    const EePolys<Fixed> s(rel[0], rel[1], rel[2]);
+    signs_at_root<Fixed>(
+        s,
+        [&](int c) -> const Poly<Fixed>& {
+          return c == 0 ? component(s.m, axis) : s.orientation(c - 1, axis);
+        },
+        which, count, lo, hi, sign_lo, signs);
+    return true;
+  } catch (const CapacityExceeded&) {
+    return false;
+  }
+}
 
 CcdResult vertex_face_ccd_exact(const VertexFaceQuery& q) {
   check_finite({&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0, &q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1});

@@ -24,6 +24,19 @@ CcdResult vertex_face_ccd_exact_gmp(const VertexFaceQuery& query);
 /// EE form of vertex_face_ccd_exact_gmp.
 CcdResult edge_edge_ccd_exact_gmp(const EdgeEdgeQuery& query);
 
+/// The double tier's exact assist: exact signs of some projected conditions
+/// (ccd_systems.hpp) along `axis` at the only root of f in (lo, hi), which the caller has
+/// certified (f has signs sign_lo at lo and -sign_lo at hi, and one simple root between).
+/// VF conditions: 0 n_k, 1 ((b-a)×(p-a))_k, 2 ((c-b)×(p-b))_k, 3 ((a-c)×(p-c))_k.
+/// EE conditions: 0 m_k, 1 ((b-a)×(c-a))_k, 2 ((b-a)×(d-a))_k, 3 ((d-c)×(a-c))_k,
+/// 4 ((d-c)×(b-c))_k. Fills signs[i] for which[i]; false when the fixed-size integers
+/// overflow (the caller then hands the query to the exact tier).
+bool vertex_face_signs_at_root(const VertexFaceQuery& query, int axis, const int* which,
+                               int count, double lo, double hi, int sign_lo, int* signs);
+/// EE form of vertex_face_signs_at_root.
+bool edge_edge_signs_at_root(const EdgeEdgeQuery& query, int axis, const int* which, int count,
+                             double lo, double hi, int sign_lo, int* signs);
+
 /// The coplanarity cubic's Bernstein coefficients in double with certified error bounds
 /// (geometry/coplanarity_sign.hpp; value[1], value[2] are 3 b1, 3 b2), computed once per
 /// query and shared by the filter and the double tier. `valid` is false when an input is
