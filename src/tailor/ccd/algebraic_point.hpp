@@ -111,8 +111,7 @@ struct RootPoint {
     r.lo = lo;
     r.hi = hi;
     r.sign_lo = sign_lo;
-    r.enc_lo = dyadic_down(lo);
-    r.enc_hi = dyadic_up(hi);
+    r.set_isolated_ends();
     return r;
   }
 
@@ -232,18 +231,15 @@ struct RootPoint {
   void set_isolated_ends() {
     enc_lo = dyadic_down(lo);
     enc_hi = dyadic_up(hi);
+    m_lo_up = dyadic_up(lo);
+    m_hi_down = dyadic_down(hi);
   }
 
   /// Newton in double from the middle of the enclosure, then an exact check of a small
   /// bracket around the estimate; false when the bracket does not verify.
   bool newton_step(double width) {
-    const int shift = scale_exponent(poly);
-    double coeff[4] = {0, 0, 0, 0};
-    for (int i = 0; i <= poly.deg; ++i) {
-      int e = 0;
-      const double m = poly.c[i].approximate(e);
-      coeff[i] = std::ldexp(m, e - shift);
-    }
+    make_ball_image(poly);  // the coefficients in double (scaled): enough for Newton
+    const double* coeff = poly.image_mid;
     auto value = [&](double t) {
       double v = 0.0;
       for (int i = poly.deg; i >= 0; --i) v = v * t + coeff[i];
@@ -266,38 +262,26 @@ struct RootPoint {
     }
     const double delta = std::fmax(width * 0.25, std::fabs(t) * 0x1p-50 + 0x1p-1000);
     bool moved = false;
-    const double x1 = t - delta, x2 = t + delta;
-    const Dyadic<Z> d1 = Dyadic<Z>::from_double(x1), d2 = Dyadic<Z>::from_double(x2);
-    if (compare(d1, lo) > 0 && compare(d1, hi) < 0) {
-      const int s = sign_at(poly, d1);
+    for (const double x : {t - delta, t + delta}) {
+      // Inside (lo, hi)? The doubles around the ends decide unless x is that close.
+      bool inside = x > m_lo_up && x < m_hi_down;
+      const bool outside = x <= enc_lo || x >= enc_hi;
+      const Dyadic<Z> d = Dyadic<Z>::from_double(x);
+      if (!inside && !outside) inside = compare(d, lo) > 0 && compare(d, hi) < 0;
+      if (!inside) continue;
+      const int s = sign_at(poly, d);
       if (s == 0) {
-        *this = dyadic(d1);
+        *this = dyadic(d);
         return true;
       }
-      if (s == sign_lo) {
-        lo = d1;
-        moved = true;
-      } else {
-        hi = d1;
-        moved = true;
-      }
-    }
-    if (compare(d2, lo) > 0 && compare(d2, hi) < 0) {
-      const int s = sign_at(poly, d2);
-      if (s == 0) {
-        *this = dyadic(d2);
-        return true;
-      }
-      if (s == sign_lo) {
-        lo = d2;
-      } else {
-        hi = d2;
-      }
+      (s == sign_lo ? lo : hi) = d;
       moved = true;
+      set_isolated_ends();
     }
-    set_isolated_ends();
     return moved;
   }
+
+  double m_lo_up = 0.0, m_hi_down = 0.0;  ///< isolated: doubles >= lo and <= hi
 };
 
 /// Exact sign of q at r.
@@ -350,6 +334,7 @@ template <class Z>
 Poly<Z> gcd(Poly<Z> a, Poly<Z> b) {
   if (a.deg < b.deg) std::swap(a, b);
   while (!b.is_zero()) {
+    if (b.deg == 0) return b;  // a nonzero constant divides everything: gcd 1
     Poly<Z> r = pseudo_remainder(a, b);
     a = std::move(b);
     b = std::move(r);
@@ -367,7 +352,7 @@ int sign_at(const Poly<Z>& q, RootPoint<Z>& r) {
   // Filter: q on the enclosure in ball arithmetic.
   auto ball_sign = [&]() {
     if (!(r.enc_lo <= r.enc_hi) || !std::isfinite(r.enc_lo) || !std::isfinite(r.enc_hi)) return 0;
-    return evaluate_ball(q, ball_hull(r.enc_lo, r.enc_hi), scale_exponent(q)).sign();
+    return detail::ball_sign(q, ball_hull(r.enc_lo, r.enc_hi));
   };
   if (const int s = ball_sign()) return s;
   switch (r.kind) {

@@ -20,11 +20,12 @@ namespace tailor::detail {
 
 namespace {
 
-/// 24 limbs (1536 bits): the largest intermediate of the exact tier is about 16 times the
+/// 32 limbs (2048 bits): the largest intermediate of the exact tier is about 16 times the
 /// bit width of the query's coordinate differences (a pseudo-remainder chain), so every
-/// query whose coordinates span up to ~90 bits (after the common power-of-two scaling)
-/// stays on the stack; float data spans ~30, double data of one scene ~50-70.
-using Fixed = FixedInt<24>;
+/// query whose coordinates span up to ~120 bits (after the common power-of-two scaling)
+/// stays on the stack; float data spans ~30, double data of one scene ~50-100. Only the
+/// used limbs are ever touched or copied, so the capacity costs stack space, not time.
+using Fixed = FixedInt<32>;
 
 using Points = std::array<const Vec3*, 8>;  // four points at t0, then the same at t1
 

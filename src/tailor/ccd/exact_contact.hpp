@@ -22,8 +22,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
+#include <optional>
 #include <limits>
+#include <new>
 
 #include "tailor/ccd/algebraic_point.hpp"
 #include "tailor/ccd/ccd_systems.hpp"
@@ -65,9 +68,12 @@ std::array<int, 3> axes_by_size(const PolyVec<Z>& v, const RootPoint<Z>& r) {
 template <class Z>
 bool on_segment_at(const PolyVec<Z>& p, const PolyVec<Z>& x, const PolyVec<Z>& y,
                    RootPoint<Z>& r) {
-  const PointSegment<Poly<Z>> s = point_segment(p, x, y);
-  return sign_at(s.cross.x, r) == 0 && sign_at(s.cross.y, r) == 0 && sign_at(s.cross.z, r) == 0 &&
-         sign_at(s.along, r) >= 0 && sign_at(s.within, r) >= 0;
+  // The point_segment conditions of ccd_systems.hpp, built one at a time (most fail early).
+  const PolyVec<Z> px = p - x, yx = y - x;
+  for (int k = 0; k < 3; ++k) {
+    if (sign_at(cross_component(px, yx, k), r) != 0) return false;
+  }
+  return sign_at(dot(px, yx), r) >= 0 && sign_at(dot(y - p, yx + px), r) >= 0;
 }
 
 /// A value computed on first use.
@@ -178,6 +184,32 @@ std::optional<double> earliest_root_contact(const Polys& s) {
 
 // ---- coplanar for the whole step ------------------------------------------------------
 
+/// A fixed-capacity vector whose elements are constructed only when pushed (large
+/// default-constructed arrays of big numbers would cost more than the work itself).
+template <class T, int Capacity>
+class InlineVector {
+ public:
+  InlineVector() = default;
+  InlineVector(const InlineVector&) = delete;
+  InlineVector& operator=(const InlineVector&) = delete;
+  ~InlineVector() {
+    for (int i = 0; i < m_size; ++i) (*this)[i].~T();
+  }
+  void push_back(T&& x) {
+    assert(m_size < Capacity);
+    new (m_storage + sizeof(T) * static_cast<std::size_t>(m_size)) T(std::move(x));
+    ++m_size;
+  }
+  int size() const { return m_size; }
+  T& operator[](int i) {
+    return *std::launder(reinterpret_cast<T*>(m_storage + sizeof(T) * static_cast<std::size_t>(i)));
+  }
+
+ private:
+  alignas(T) unsigned char m_storage[sizeof(T) * Capacity];
+  int m_size = 0;
+};
+
 /// One condition on the sign of sign * p * q (q optional).
 template <class Z>
 struct Condition {
@@ -250,9 +282,8 @@ std::optional<double> earliest_solution(const std::array<Condition<Z>, MaxCondit
   }
   // Candidates: 0 and the roots of every factor.
   constexpr int kMaxCandidates = 1 + 2 * 2 * MaxConditions;
-  std::array<RootPoint<Z>, kMaxCandidates> candidates;
-  int m = 0;
-  candidates[m++] = RootPoint<Z>::rational(Z(0), Z(1));
+  InlineVector<RootPoint<Z>, kMaxCandidates> candidates;  // constructed one by one
+  candidates.push_back(RootPoint<Z>::rational(Z(0), Z(1)));
   const Poly<Z>* seen[2 * MaxConditions];
   int seen_count = 0;
   for (int i = 0; i < n; ++i) {
@@ -264,10 +295,11 @@ std::optional<double> earliest_solution(const std::array<Condition<Z>, MaxCondit
       roots_in_unit(*p, roots);
       for (int j = 0; j < roots.count; ++j) {
         roots.root[j].clamp_to_unit();
-        candidates[m++] = std::move(roots.root[j]);
+        candidates.push_back(std::move(roots.root[j]));
       }
     }
   }
+  const int m = candidates.size();
   std::array<int, kMaxCandidates> order;
   for (int i = 0; i < m; ++i) order[i] = i;
   std::sort(order.begin(), order.begin() + m,
@@ -297,6 +329,51 @@ bool no_root_in_unit(const Poly<Z>& q) {
   return roots.count == 0;
 }
 
+/// The earliest instant in [0, 1] where the vector v (not identically zero) vanishes and
+/// `holds` is true there.
+template <class Z, class Holds>
+std::optional<double> earliest_at_zeros(const PolyVec<Z>& v, Holds&& holds) {
+  int first = 0;
+  while (component(v, first).is_zero()) ++first;
+  UnitRoots<Z> roots;
+  roots_in_unit(component(v, first), roots);
+  for (int i = 0; i < roots.count; ++i) {
+    RootPoint<Z>& r = roots.root[i];
+    bool zero = true;
+    for (int j = first + 1; j < 3 && zero; ++j) zero = sign_at(component(v, j), r) == 0;
+    if (zero && holds(r)) return lower_bound(r);
+  }
+  return std::nullopt;
+}
+
+/// For a normal vector v (n or m) that is not identically zero: the axes whose projection
+/// branches are needed to cover every instant with v != 0. One axis k suffices when n_k
+/// vanishes only where all of v does (for instance a plane of fixed orientation).
+template <class Z>
+int covering_axes(const PolyVec<Z>& v, std::array<int, 3>& axes) {
+  for (int k = 0; k < 3; ++k) {
+    const Poly<Z>& vk = component(v, k);
+    if (vk.is_zero()) continue;
+    UnitRoots<Z> roots;
+    roots_in_unit(vk, roots);
+    bool suffices = true;
+    for (int i = 0; i < roots.count && suffices; ++i) {
+      for (int j = 0; j < 3 && suffices; ++j) {
+        if (j != k && sign_at(component(v, j), roots.root[i]) != 0) suffices = false;
+      }
+    }
+    if (suffices) {
+      axes[0] = k;
+      return 1;
+    }
+  }
+  int count = 0;
+  for (int k = 0; k < 3; ++k) {
+    if (!component(v, k).is_zero()) axes[count++] = k;
+  }
+  return count;
+}
+
 /// Coplanar VF: the earliest t where p is in the closed triangle.
 template <class Z>
 std::optional<double> earliest_coplanar_contact(const VfPolys<Z>& s) {
@@ -306,7 +383,7 @@ std::optional<double> earliest_coplanar_contact(const VfPolys<Z>& s) {
     const Poly<Z>& nk = component(s.n, k);
     if (!no_root_in_unit(nk)) continue;
     // n_k keeps one sign: the projection along k is valid for the whole step.
-    const int sk = nk.c[0].is_zero() ? 1 : nk.c[0].sign();  // n_k(0) != 0 here
+    const int sk = nk.c[0].sign();  // n_k(0) != 0 here
     const std::array<C, 3> conds{C{&s.edge(0, k), nullptr, sk, R::nonnegative},
                                  C{&s.edge(1, k), nullptr, sk, R::nonnegative},
                                  C{&s.edge(2, k), nullptr, sk, R::nonnegative}};
@@ -316,24 +393,38 @@ std::optional<double> earliest_coplanar_contact(const VfPolys<Z>& s) {
   auto keep = [&](std::optional<double> t) {
     if (t && (!best || *t < *best)) best = t;
   };
-  for (int k = 0; k < 3; ++k) {
-    const Poly<Z>& nk = component(s.n, k);
-    if (nk.is_zero()) continue;
-    const std::array<C, 4> conds{C{&nk, nullptr, 1, R::nonzero},
-                                 C{&nk, &s.edge(0, k), 1, R::nonnegative},
-                                 C{&nk, &s.edge(1, k), 1, R::nonnegative},
-                                 C{&nk, &s.edge(2, k), 1, R::nonnegative}};
-    keep(earliest_solution<Z, 4>(conds, 4));
+  // Instants with n != 0: projected branches (guarded by n_k != 0).
+  const bool ever_nondegenerate = !s.n.x.is_zero() || !s.n.y.is_zero() || !s.n.z.is_zero();
+  if (ever_nondegenerate) {
+    std::array<int, 3> axes{};
+    const int count = covering_axes(s.n, axes);
+    for (int i = 0; i < count; ++i) {
+      const int k = axes[i];
+      const Poly<Z>& nk = component(s.n, k);
+      const std::array<C, 4> conds{C{&nk, nullptr, 1, R::nonzero},
+                                   C{&nk, &s.edge(0, k), 1, R::nonnegative},
+                                   C{&nk, &s.edge(1, k), 1, R::nonnegative},
+                                   C{&nk, &s.edge(2, k), 1, R::nonnegative}};
+      keep(earliest_solution<Z, 4>(conds, 4));
+    }
   }
+  // Instants with n = 0 (a zero-area triangle): p on one of the edges.
   const PolyVec<Z>* edges[3][2] = {{&s.zero, &s.u}, {&s.u, &s.v}, {&s.v, &s.zero}};
-  for (const auto& e : edges) {
-    const PointSegment<Poly<Z>> ps = point_segment(s.w, *e[0], *e[1]);
-    const std::array<C, 5> conds{
-        C{&ps.cross.x, nullptr, 1, R::zero}, C{&ps.cross.y, nullptr, 1, R::zero},
-        C{&ps.cross.z, nullptr, 1, R::zero}, C{&ps.along, nullptr, 1, R::nonnegative},
-        C{&ps.within, nullptr, 1, R::nonnegative}};
-    keep(earliest_solution<Z, 5>(conds, 5));
+  if (!ever_nondegenerate) {
+    for (const auto& e : edges) {
+      const PointSegment<Poly<Z>> ps = point_segment(s.w, *e[0], *e[1]);
+      const std::array<C, 5> conds{
+          C{&ps.cross.x, nullptr, 1, R::zero}, C{&ps.cross.y, nullptr, 1, R::zero},
+          C{&ps.cross.z, nullptr, 1, R::zero}, C{&ps.along, nullptr, 1, R::nonnegative},
+          C{&ps.within, nullptr, 1, R::nonnegative}};
+      keep(earliest_solution<Z, 5>(conds, 5));
+    }
+    return best;
   }
+  keep(earliest_at_zeros(s.n, [&](RootPoint<Z>& r) {
+    return on_segment_at(s.w, s.zero, s.u, r) || on_segment_at(s.w, s.u, s.v, r) ||
+           on_segment_at(s.w, s.v, s.zero, r);
+  }));
   return best;
 }
 
@@ -354,24 +445,41 @@ std::optional<double> earliest_coplanar_contact(const EePolys<Z>& s) {
   auto keep = [&](std::optional<double> t) {
     if (t && (!best || *t < *best)) best = t;
   };
-  for (int k = 0; k < 3; ++k) {
-    const Poly<Z>& mk = component(s.m, k);
-    if (mk.is_zero()) continue;
-    const std::array<C, 3> conds{C{&mk, nullptr, 1, R::nonzero},
-                                 C{&s.orientation(0, k), &s.orientation(1, k), -1, R::nonnegative},
-                                 C{&s.orientation(2, k), &s.orientation(3, k), -1, R::nonnegative}};
-    keep(earliest_solution<Z, 3>(conds, 3));
+  // Instants where the edges are not parallel: projected branches (m_k != 0).
+  const bool ever_crossing = !s.m.x.is_zero() || !s.m.y.is_zero() || !s.m.z.is_zero();
+  if (ever_crossing) {
+    std::array<int, 3> axes{};
+    const int count = covering_axes(s.m, axes);
+    for (int i = 0; i < count; ++i) {
+      const int k = axes[i];
+      const Poly<Z>& mk = component(s.m, k);
+      const std::array<C, 3> conds{
+          C{&mk, nullptr, 1, R::nonzero},
+          C{&s.orientation(0, k), &s.orientation(1, k), -1, R::nonnegative},
+          C{&s.orientation(2, k), &s.orientation(3, k), -1, R::nonnegative}};
+      keep(earliest_solution<Z, 3>(conds, 3));
+    }
   }
+  // Instants with m = 0 (parallel, or a zero-length edge): an endpoint on the other edge.
   const PolyVec<Z>* cases[4][3] = {
       {&s.zero, &s.v, &s.w}, {&s.u, &s.v, &s.w}, {&s.v, &s.zero, &s.u}, {&s.w, &s.zero, &s.u}};
-  for (const auto& c : cases) {
-    const PointSegment<Poly<Z>> ps = point_segment(*c[0], *c[1], *c[2]);
-    const std::array<C, 5> conds{
-        C{&ps.cross.x, nullptr, 1, R::zero}, C{&ps.cross.y, nullptr, 1, R::zero},
-        C{&ps.cross.z, nullptr, 1, R::zero}, C{&ps.along, nullptr, 1, R::nonnegative},
-        C{&ps.within, nullptr, 1, R::nonnegative}};
-    keep(earliest_solution<Z, 5>(conds, 5));
+  if (!ever_crossing) {
+    for (const auto& c : cases) {
+      const PointSegment<Poly<Z>> ps = point_segment(*c[0], *c[1], *c[2]);
+      const std::array<C, 5> conds{
+          C{&ps.cross.x, nullptr, 1, R::zero}, C{&ps.cross.y, nullptr, 1, R::zero},
+          C{&ps.cross.z, nullptr, 1, R::zero}, C{&ps.along, nullptr, 1, R::nonnegative},
+          C{&ps.within, nullptr, 1, R::nonnegative}};
+      keep(earliest_solution<Z, 5>(conds, 5));
+    }
+    return best;
   }
+  keep(earliest_at_zeros(s.m, [&](RootPoint<Z>& r) {
+    for (const auto& c : cases) {
+      if (on_segment_at(*c[0], *c[1], *c[2], r)) return true;
+    }
+    return false;
+  }));
   return best;
 }
 

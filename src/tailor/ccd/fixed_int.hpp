@@ -33,14 +33,14 @@ class FixedInt {
       m_limb[0] = v < 0 ? ~static_cast<std::uint64_t>(v) + 1 : static_cast<std::uint64_t>(v);
     }
   }
-  // Copies move only the used limbs (a plain loop: sizes are small).
+  // Copies move only the used limbs.
   FixedInt(const FixedInt& o) : m_size(o.m_size), m_negative(o.m_negative) {
-    for (int i = 0; i < m_size; ++i) m_limb[i] = o.m_limb[i];
+    copy_limbs(m_limb, o.m_limb, m_size);
   }
   FixedInt& operator=(const FixedInt& o) {
     m_size = o.m_size;
     m_negative = o.m_negative;
-    for (int i = 0; i < m_size; ++i) m_limb[i] = o.m_limb[i];
+    copy_limbs(m_limb, o.m_limb, m_size);
     return *this;
   }
 
@@ -96,45 +96,25 @@ class FixedInt {
     return r;
   }
 
-  friend FixedInt operator+(const FixedInt& a, const FixedInt& b) {
-    return a.m_negative == b.m_negative ? add_magnitudes(a, b, a.m_negative)
-                                        : subtract_signed(a, b, b.m_negative);
+  [[gnu::always_inline]] friend FixedInt operator+(const FixedInt& a, const FixedInt& b) {
+    if (a.m_size <= 1 && b.m_size <= 1) return from_small(a.small() + b.small());
+    return add(a, b, false);
   }
-  friend FixedInt operator-(const FixedInt& a, const FixedInt& b) {
-    return a.m_negative != b.m_negative ? add_magnitudes(a, b, a.m_negative)
-                                        : subtract_signed(a, b, !b.m_negative);
+  [[gnu::always_inline]] friend FixedInt operator-(const FixedInt& a, const FixedInt& b) {
+    if (a.m_size <= 1 && b.m_size <= 1) return from_small(a.small() - b.small());
+    return add(a, b, true);
   }
-  friend FixedInt operator*(const FixedInt& a, const FixedInt& b) {
-    FixedInt r;
-    if (a.m_size == 0 || b.m_size == 0) return r;
-    r.m_negative = a.m_negative != b.m_negative;
+  [[gnu::always_inline]] friend FixedInt operator*(const FixedInt& a, const FixedInt& b) {
     if (a.m_size == 1 && b.m_size == 1) {  // the common case: one 64x64 -> 128 product
+      FixedInt r;
+      r.m_negative = a.m_negative != b.m_negative;
       const Limb2 t = static_cast<Limb2>(a.m_limb[0]) * b.m_limb[0];
       r.m_limb[0] = static_cast<std::uint64_t>(t);
       r.m_limb[1] = static_cast<std::uint64_t>(t >> 64);
       r.m_size = r.m_limb[1] != 0 ? 2 : 1;
       return r;
     }
-    const int n = a.m_size + b.m_size;
-    if (n - 1 > N) throw CapacityExceeded{};
-    std::uint64_t out[2 * N];
-    for (int i = 0; i < n; ++i) out[i] = 0;
-    for (int i = 0; i < a.m_size; ++i) {
-      std::uint64_t carry = 0;
-      const Limb2 ai = a.m_limb[i];
-      for (int j = 0; j < b.m_size; ++j) {
-        const Limb2 t = ai * b.m_limb[j] + out[i + j] + carry;
-        out[i + j] = static_cast<std::uint64_t>(t);
-        carry = static_cast<std::uint64_t>(t >> 64);
-      }
-      out[i + b.m_size] = carry;
-    }
-    int size = n;
-    while (size > 0 && out[size - 1] == 0) --size;
-    if (size > N) throw CapacityExceeded{};
-    for (int i = 0; i < size; ++i) r.m_limb[i] = out[i];
-    r.m_size = size;
-    return r;
+    return multiply(a, b);
   }
   FixedInt& operator+=(const FixedInt& b) { return *this = *this + b; }
   FixedInt& operator-=(const FixedInt& b) { return *this = *this - b; }
@@ -176,6 +156,92 @@ class FixedInt {
   }
 
  private:
+  /// The general product (out of line).
+  [[gnu::noinline]] static FixedInt multiply(const FixedInt& a, const FixedInt& b) {
+    FixedInt r;
+    if (a.m_size == 0 || b.m_size == 0) return r;
+    r.m_negative = a.m_negative != b.m_negative;
+    const int n = a.m_size + b.m_size;
+    if (n - 1 > N) throw CapacityExceeded{};
+    std::uint64_t out[2 * N];  // no clearing: row 0 writes, later rows add
+    {
+      std::uint64_t carry = 0;
+      const Limb2 a0 = a.m_limb[0];
+      for (int j = 0; j < b.m_size; ++j) {
+        const Limb2 t = a0 * b.m_limb[j] + carry;
+        out[j] = static_cast<std::uint64_t>(t);
+        carry = static_cast<std::uint64_t>(t >> 64);
+      }
+      out[b.m_size] = carry;
+    }
+    for (int i = 1; i < a.m_size; ++i) {
+      std::uint64_t carry = 0;
+      const Limb2 ai = a.m_limb[i];
+      for (int j = 0; j < b.m_size; ++j) {
+        const Limb2 t = ai * b.m_limb[j] + out[i + j] + carry;
+        out[i + j] = static_cast<std::uint64_t>(t);
+        carry = static_cast<std::uint64_t>(t >> 64);
+      }
+      out[i + b.m_size] = carry;
+    }
+    int size = n;
+    while (size > 0 && out[size - 1] == 0) --size;
+    if (size > N) throw CapacityExceeded{};
+    copy_limbs(r.m_limb, out, size);
+    r.m_size = size;
+    return r;
+  }
+
+  /// a + b, or a - b when `subtract` (out of line: the general case).
+  [[gnu::noinline]] static FixedInt add(const FixedInt& a, const FixedInt& b, bool subtract) {
+    const bool b_negative = b.m_negative != subtract;
+    return a.m_negative == b_negative ? add_magnitudes(a, b, a.m_negative)
+                                      : subtract_signed(a, b, b_negative);
+  }
+
+  __extension__ using Signed2 = __int128;
+
+  /// The value of a number of at most one limb (|x| < 2^64) as a 128-bit integer.
+  Signed2 small() const {
+    if (m_size == 0) return 0;
+    const auto v = static_cast<Signed2>(m_limb[0]);
+    return m_negative ? -v : v;
+  }
+  /// A number |v| < 2^127 (sums and differences of one-limb numbers).
+  static FixedInt from_small(Signed2 v) {
+    FixedInt r;
+    if (v == 0) return r;
+    r.m_negative = v < 0;
+    const auto m = static_cast<Limb2>(v < 0 ? -v : v);
+    r.m_limb[0] = static_cast<std::uint64_t>(m);
+    r.m_limb[1] = static_cast<std::uint64_t>(m >> 64);
+    r.m_size = r.m_limb[1] != 0 ? 2 : 1;
+    return r;
+  }
+
+  /// Copies n limbs; small counts without a string-copy instruction's start-up cost.
+  [[gnu::always_inline]] static void copy_limbs(std::uint64_t* to, const std::uint64_t* from,
+                                               int n) {
+    switch (n) {
+      case 4:
+        to[3] = from[3];
+        [[fallthrough]];
+      case 3:
+        to[2] = from[2];
+        [[fallthrough]];
+      case 2:
+        to[1] = from[1];
+        [[fallthrough]];
+      case 1:
+        to[0] = from[0];
+        [[fallthrough]];
+      case 0:
+        return;
+      default:
+        for (int i = 0; i < n; ++i) to[i] = from[i];
+    }
+  }
+
   /// Sign of |a| - |b|.
   static int compare_magnitudes(const FixedInt& a, const FixedInt& b) {
     if (a.m_size != b.m_size) return a.m_size < b.m_size ? -1 : 1;
@@ -231,9 +297,10 @@ class FixedInt {
     return r;
   }
 
-  std::uint64_t m_limb[N];
+  // The header first: small numbers then touch a single cache line.
   int m_size = 0;
   bool m_negative = false;
+  std::uint64_t m_limb[N];
 };
 
 }  // namespace tailor::detail

@@ -6,6 +6,7 @@
 /// Internal to the ccd module.
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <cstdint>
@@ -21,6 +22,11 @@ struct Poly {
   static constexpr int kMaxDegree = 3;
   Z c[kMaxDegree + 1];
   int deg = -1;
+  // Cached ball image of the coefficients (ball_image): midpoints and radii, left
+  // uninitialised until then (every Poly is finished before it is first evaluated).
+  mutable bool image_ready = false;
+  mutable double image_mid[kMaxDegree + 1];
+  mutable double image_rad[kMaxDegree + 1];
 
   Poly() = default;
   /// The constant x.
@@ -44,6 +50,7 @@ struct Poly {
   const Z& lead() const { return c[deg]; }
   void trim() {
     while (deg >= 0 && c[deg].is_zero()) --deg;
+    image_ready = false;
   }
 
   friend Poly operator+(const Poly& a, const Poly& b) {
@@ -67,6 +74,7 @@ struct Poly {
   Poly operator-() const {
     Poly r = *this;
     for (int i = 0; i <= deg; ++i) r.c[i] = -c[i];
+    r.image_ready = false;
     return r;
   }
   /// Product; the degrees must add up to at most kMaxDegree.
@@ -75,9 +83,12 @@ struct Poly {
     if (a.deg < 0 || b.deg < 0) return r;
     assert(a.deg + b.deg <= kMaxDegree);
     r.deg = a.deg + b.deg;
-    for (int k = 0; k <= r.deg; ++k) r.c[k] = Z();
-    for (int i = 0; i <= a.deg; ++i) {
-      for (int j = 0; j <= b.deg; ++j) r.c[i + j] += a.c[i] * b.c[j];
+    for (int k = 0; k <= r.deg; ++k) {
+      // Coefficient k: the sum of a_i b_(k-i), built once.
+      const int lo = std::max(0, k - b.deg), hi = std::min(k, a.deg);
+      Z sum = a.c[lo] * b.c[k - lo];
+      for (int i = lo + 1; i <= hi; ++i) sum = sum + a.c[i] * b.c[k - i];
+      r.c[k] = sum;
     }
     r.trim();
     return r;
@@ -223,6 +234,30 @@ Ball evaluate_ball(const Poly<Z>& p, const Ball& t, int shift) {
   Ball acc = coefficient_ball(p.c[p.deg], shift);
   for (int i = p.deg - 1; i >= 0; --i) acc = acc * t + coefficient_ball(p.c[i], shift);
   return acc;
+}
+
+/// Fills p's cached ball image: coefficients scaled by 2^-scale_exponent(p), computed
+/// once per polynomial (sign tests evaluate the same polynomial at many points).
+template <class Z>
+void make_ball_image(const Poly<Z>& p) {
+  if (p.image_ready) return;
+  const int shift = scale_exponent(p);
+  for (int i = 0; i <= p.deg; ++i) {
+    const Ball b = coefficient_ball(p.c[i], shift);
+    p.image_mid[i] = b.m;
+    p.image_rad[i] = b.r;
+  }
+  p.image_ready = true;
+}
+
+/// The sign of p on the ball t when certain, else 0 (p's cached ball image, Horner).
+template <class Z>
+int ball_sign(const Poly<Z>& p, const Ball& t) {
+  if (p.deg < 0) return 0;
+  make_ball_image(p);
+  Ball acc(p.image_mid[p.deg], p.image_rad[p.deg]);
+  for (int i = p.deg - 1; i >= 0; --i) acc = acc * t + Ball(p.image_mid[i], p.image_rad[i]);
+  return acc.sign();
 }
 
 }  // namespace tailor::detail

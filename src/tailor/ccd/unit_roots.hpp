@@ -104,7 +104,10 @@ void quadratic_roots_in_unit(const Poly<Z>& p, UnitRoots<Z>& out) {
   const Dyadic<Z> zero{Z(), 0}, one{Z(1), 0};
   for (bool larger : {false, true}) {
     RootPoint<Z> r = RootPoint<Z>::quadratic(p, D, larger);
-    const int at0 = r.compare_to(zero), at1 = r.compare_to(one);
+    // The certified enclosure settles membership unless it straddles 0 or 1.
+    if (r.enc_hi < 0.0 || r.enc_lo > 1.0) continue;
+    const int at0 = r.enc_lo > 0.0 ? 1 : r.compare_to(zero);
+    const int at1 = r.enc_hi < 1.0 ? -1 : r.compare_to(one);
     if (at0 < 0 || at1 > 0) continue;
     if (at0 == 0) {
       out.add(RootPoint<Z>::rational(Z(0), Z(1)));
