@@ -72,6 +72,12 @@ std::optional<mpq_class> point_on_segment(const PV& p, const PV& a, const PV& b)
   return earliest_solution(common, {{s.along, false}, {s.within, false}}, tolerance());
 }
 
+/// f (nonzero) vanishes somewhere in [0, 1]: otherwise no branch can hold, and the
+/// conditions need not be built.
+bool has_root_in_unit(const RationalPoly& f) {
+  return f.degree() > 0 && !isolate_roots_unit(squarefree_part(f)).empty();
+}
+
 void keep_min(std::optional<mpq_class>& best, const std::optional<mpq_class>& x) {
   if (x && (!best || *x < *best)) best = x;
 }
@@ -134,7 +140,7 @@ CcdResult vertex_face_ccd_rational(const VertexFaceQuery& q) {
            b = moving_point(q.b_t0, q.b_t1, s), c = moving_point(q.c_t0, q.c_t1, s);
   // Every branch needs f = 0 (p coplanar with the triangle).
   const RationalPoly f = coplanarity(a, b, c, p);
-  if (!f.is_zero() && f.degree() == 0) return to_result({});
+  if (!f.is_zero() && !has_root_in_unit(f)) return to_result({});
   const FaceConditions<RationalPoly> fc = face_conditions(p, a, b, c);
   const std::vector<SignCondition> main{
       {fc.N, true}, {fc.E_ab, false}, {fc.E_bc, false}, {fc.E_ca, false}};
@@ -158,7 +164,7 @@ CcdResult edge_edge_ccd_rational(const EdgeEdgeQuery& q) {
   const PV a = moving_point(q.ea0_t0, q.ea0_t1, s), b = moving_point(q.ea1_t0, q.ea1_t1, s),
            c = moving_point(q.eb0_t0, q.eb0_t1, s), d = moving_point(q.eb1_t0, q.eb1_t1, s);
   const RationalPoly f = coplanarity(a, b, c, d);
-  if (!f.is_zero() && f.degree() == 0) return to_result({});
+  if (!f.is_zero() && !has_root_in_unit(f)) return to_result({});
   const EdgeConditions<RationalPoly> ec = edge_conditions(a, b, c, d);
   const std::vector<SignCondition> main{
       {ec.M, true}, {ec.S_, false}, {ec.M_minus_S, false}, {ec.U, false}, {ec.M_minus_U, false}};

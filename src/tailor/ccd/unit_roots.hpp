@@ -17,7 +17,6 @@
 ///   a(b^2 - 3ac), or the triple root -b / 3a).
 
 #include <utility>
-#include <vector>
 
 #include "tailor/ccd/algebraic_point.hpp"
 #include "tailor/ccd/fixed_int.hpp"
@@ -37,9 +36,9 @@ namespace unit_roots_detail {
 
 /// Depth after which a stalled subdivision checks for a multiple root.
 inline constexpr int kDiscriminantDepth = 24;
-/// Depth limit of one subdivision with fixed-size integers: roots closer than 2^-60 need
-/// wider numbers than the fixed-size tier carries, and GMP takes over (unbounded depth).
-inline constexpr int kMaxFixedDepth = 60;
+/// Depth limit of one subdivision with fixed-size integers (coefficients grow 3 bits a
+/// level): roots closer than 2^-300 need wider numbers, and GMP takes over.
+inline constexpr int kMaxFixedDepth = 300;
 
 template <class Z>
 bool in_unit(const Z& num, const Z& den) {  // den > 0
@@ -126,8 +125,33 @@ void cubic_roots_in_unit(const Poly<Z>& p, UnitRoots<Z>& out) {
     Z b[4];
     Z k;  // the node is [k / 2^j, (k + 1) / 2^j]
     int j = 0;
-    bool root_at_start = false;  // its left end is a root, recorded when it is reached
   };
+  // Work left to do, in order: a node to subdivide, a node known to isolate one root, or
+  // a dyadic root at a split point. Subdivision diminishes variations (those of the two
+  // halves add up to at most the parent's, <= 3), so at most one pending node can hold
+  // two or more, and the list stays short however deep the subdivision goes (close roots
+  // need depth, not memory).
+  struct Pending {
+    enum class Kind : unsigned char { node, isolated, root } kind = Kind::node;
+    Node node;
+  };
+  constexpr int kMaxPending = 12;
+  Pending pending[kMaxPending];
+  int top = 0;
+  auto push = [&](typename Pending::Kind kind, const Node& n) {
+    if (top == kMaxPending) throw CapacityExceeded{};
+    pending[top].kind = kind;
+    pending[top].node = n;
+    ++top;
+  };
+  auto isolated_root = [&](const Node& n) {
+    return RootPoint<Z>::isolated(p, Dyadic<Z>{n.k, n.j}, Dyadic<Z>{n.k + Z(1), n.j},
+                                  n.b[0].sign());
+  };
+  auto isolates = [](const Node& n) {
+    return variations(n.b) == 1 && !n.b[0].is_zero() && !n.b[3].is_zero();
+  };
+
   const Z c0 = p.at(0), c1 = p.at(1), c2 = p.at(2), c3 = p.at(3);
   Node cur;
   cur.b[0] = Z(3) * c0;
@@ -136,36 +160,13 @@ void cubic_roots_in_unit(const Poly<Z>& p, UnitRoots<Z>& out) {
   cur.b[3] = Z(3) * (c0 + c1 + c2 + c3);
   const bool root_at_one = cur.b[3].is_zero();
   if (cur.b[0].is_zero()) out.add(RootPoint<Z>::rational(Z(0), Z(1)));
-  // Pending right halves, at most one per level.
-  constexpr int kStack = Z::kBounded ? kMaxFixedDepth + 2 : 1;
-  Node fixed_stack[kStack];
-  std::vector<Node> heap_stack;  // unbounded integers only
-  int top = 0;
-  auto push = [&]() -> Node& {
-    if constexpr (Z::kBounded) {
-      return fixed_stack[top++];
-    } else {
-      if (static_cast<int>(heap_stack.size()) <= top) heap_stack.resize(top + 1);
-      return heap_stack[top++];
-    }
-  };
-  auto pop = [&]() -> Node& {
-    if constexpr (Z::kBounded) {
-      return fixed_stack[--top];
-    } else {
-      return heap_stack[--top];
-    }
-  };
   bool discriminant_checked = false;
-  for (;;) {
+  bool have = true;
+  while (have) {
     const int v = variations(cur.b);
-    bool done = v == 0;
-    if (!done && v == 1 && !cur.b[0].is_zero() && !cur.b[3].is_zero()) {
-      out.add(RootPoint<Z>::isolated(p, Dyadic<Z>{cur.k, cur.j}, Dyadic<Z>{cur.k + Z(1), cur.j},
-                                     cur.b[0].sign()));
-      done = true;
-    }
-    if (!done) {
+    if (v == 1 && isolates(cur)) {
+      out.add(isolated_root(cur));
+    } else if (v > 0) {
       if (cur.j >= kDiscriminantDepth && !discriminant_checked) {
         discriminant_checked = true;
         if (cubic_discriminant(p).is_zero()) {
@@ -180,14 +181,13 @@ void cubic_roots_in_unit(const Poly<Z>& p, UnitRoots<Z>& out) {
       const Z b01 = b0 + b1, b12 = b1 + b2, b23 = b2 + b3;
       const Z b012 = b01 + b12, b123 = b12 + b23;
       const Z mid = b012 + b123;
-      Node& right = push();
+      Node right;
       right.b[0] = mid;
       right.b[1] = b123.shifted(1);
       right.b[2] = b23.shifted(2);
       right.b[3] = b3.shifted(3);
       right.k = cur.k.shifted(1) + Z(1);
       right.j = cur.j + 1;
-      right.root_at_start = mid.is_zero();
       Node left;
       left.b[0] = b0.shifted(3);
       left.b[1] = b01.shifted(2);
@@ -195,12 +195,28 @@ void cubic_roots_in_unit(const Poly<Z>& p, UnitRoots<Z>& out) {
       left.b[3] = mid;
       left.k = cur.k.shifted(1);
       left.j = cur.j + 1;
-      cur = left;
+      // Pushed in reverse order of the roots: right half, then the split point.
+      if (variations(right.b) > 0) {
+        push(isolates(right) ? Pending::Kind::isolated : Pending::Kind::node, right);
+      }
+      if (mid.is_zero()) push(Pending::Kind::root, right);
+      cur = std::move(left);
       continue;
     }
-    if (top == 0) break;
-    cur = pop();
-    if (cur.root_at_start) out.add(RootPoint<Z>::dyadic(Dyadic<Z>{cur.k, cur.j}));
+    // Next pending work.
+    have = false;
+    while (top > 0) {
+      Pending& next = pending[--top];
+      if (next.kind == Pending::Kind::root) {
+        out.add(RootPoint<Z>::dyadic(Dyadic<Z>{next.node.k, next.node.j}));
+      } else if (next.kind == Pending::Kind::isolated) {
+        out.add(isolated_root(next.node));
+      } else {
+        cur = std::move(next.node);
+        have = true;
+        break;
+      }
+    }
   }
   if (root_at_one) out.add(RootPoint<Z>::rational(Z(1), Z(1)));
 }
