@@ -102,22 +102,16 @@ Motion make_motion(const Vec3* t0[4], const Vec3* t1[4]) {
   return m;
 }
 
-Ball component(const BV& v, int k) {
-  return k == 0 ? v.x : (k == 1 ? v.y : v.z);
-}
-
-/// The axis with the largest |component| whose sign is certain, or -1.
-int certain_axis(const BV& v) {
-  int best = -1;
-  double size = -1.0;
-  for (int k = 0; k < 3; ++k) {
-    const Ball c = component(v, k);
-    if (c.nonzero() && std::fabs(c.m) > size) {
-      size = std::fabs(c.m);
-      best = k;
-    }
-  }
-  return best;
+/// The axis k with the largest |(x × y)_k| (midpoints only) and that component as a ball
+/// (computing one ball component instead of three).
+int largest_cross_axis(const BV& x, const BV& y, Ball& component_k) {
+  const double c[3] = {x.y.m * y.z.m - x.z.m * y.y.m, x.z.m * y.x.m - x.x.m * y.z.m,
+                       x.x.m * y.y.m - x.y.m * y.x.m};
+  int k = 0;
+  if (std::fabs(c[1]) > std::fabs(c[k])) k = 1;
+  if (std::fabs(c[2]) > std::fabs(c[k])) k = 2;
+  component_k = cross_component(x, y, k);
+  return k;
 }
 
 enum class Verdict { outside, inside, unknown };
@@ -136,10 +130,10 @@ struct RootBracket {
 Verdict vf_verdict(const Motion& motion, const Ball& t, const VertexFaceQuery* query = nullptr,
                    const RootBracket* root = nullptr) {
   const auto [u, v, w] = motion.at(t);  // b - a, c - a, p - a
-  const BV n = cross(u, v);
-  const int k = certain_axis(n);
-  if (k < 0) return Verdict::unknown;
-  const int s = component(n, k).sign();
+  Ball nk;
+  const int k = largest_cross_axis(u, v, nk);
+  const int s = nk.sign();
+  if (s == 0) return Verdict::unknown;
   const BV zero{Ball(0.0), Ball(0.0), Ball(0.0)};
   int e[3] = {cross_component(u, w, k).sign(), cross_component(v - u, w - u, k).sign(),
               cross_component(zero - v, w - v, k).sign()};
@@ -166,9 +160,9 @@ Verdict ee_verdict(const Motion& motion, const Ball& t, const EdgeEdgeQuery* que
                    const RootBracket* root = nullptr) {
   const auto [u, v, w] = motion.at(t);  // b - a, c - a, d - a
   const BV dc = w - v;
-  const BV m = cross(u, dc);
-  const int k = certain_axis(m);
-  if (k < 0) return Verdict::unknown;
+  Ball mk;
+  const int k = largest_cross_axis(u, dc, mk);
+  if (mk.sign() == 0) return Verdict::unknown;
   const BV zero{Ball(0.0), Ball(0.0), Ball(0.0)};
   int o[4] = {cross_component(u, v, k).sign(), cross_component(u, w, k).sign(),
               cross_component(dc, zero - v, k).sign(), cross_component(dc, u - v, k).sign()};
@@ -192,21 +186,24 @@ Verdict ee_verdict(const Motion& motion, const Ball& t, const EdgeEdgeQuery* que
 /// kToiWidth wide, or nullopt.
 std::optional<std::array<double, 2>> bracket_root(const Cubic& f, const Node& node,
                                                   int sign_left) {
-  // Newton from the middle, kept inside the node.
-  double t = 0.5 * (node.t1 + node.t2);
-  for (int i = 0; i < 6; ++i) {
+  // Newton from the middle, kept inside the node, until its step is well below the
+  // bracket we want (convergence is quadratic: the error is then far smaller still).
+  double t = 0.5 * (node.t1 + node.t2), step = node.t2 - node.t1;
+  for (int i = 0; i < 8 && std::fabs(step) > 0x1p-30; ++i) {
     double slope = 0.0;
     const Value v = evaluate(f, t, &slope);
     if (!(slope != 0.0)) break;
     const double next = t - v.v / slope;
-    if (!(next > node.t1 && next < node.t2) || next == t) break;
+    if (!(next > node.t1 && next < node.t2)) break;
+    step = next - t;
     t = next;
   }
   double slope = 0.0;
   const Value at = evaluate(f, t, &slope);
-  // Half-width where |f| should clear its error bound, then 16 and 256 times wider.
+  // Half-width where |f| should clear its error bound (and beyond Newton's last step),
+  // then 16 and 256 times wider.
   double delta = std::fabs(slope) > 0.0 ? 4.0 * at.err / std::fabs(slope) : kToiWidth;
-  delta = std::clamp(delta, 0x1p-40, kToiWidth * 0.5);
+  delta = std::clamp(std::fmax(delta, 2.0 * std::fabs(step)), 0x1p-40, kToiWidth * 0.5);
   for (int attempt = 0; attempt < 3; ++attempt, delta = std::min(delta * 16.0, kToiWidth * 0.5)) {
     const double ta = std::max(node.t1, t - delta), tb = std::min(node.t2, t + delta);
     const int sa = ta == node.t1 ? sign_left : evaluate(f, ta).sign();
