@@ -105,22 +105,22 @@ QuerySet folded_cloth() {
   std::vector<EdgeEdgePair> ee_pairs;
   LowLevelCounts counts;
   generator.generate(result.candidate_triangle_pairs, isolated, step.x0, step.x1,
-                     {config.feature_assignment, config.primitive_boxes,
-                      config.coplanarity_filter, config.adjacency_culling},
+                     {config.feature_assignment, config.primitive_boxes, config.coplanarity_filter,
+                      config.adjacency_culling},
                      vf_pairs, ee_pairs, counts);
   QuerySet r;
   const auto& x0 = step.x0;
   const auto& x1 = step.x1;
   for (const auto& [v, f] : vf_pairs) {
     const Index a = mesh.faces()(f, 0), b = mesh.faces()(f, 1), c = mesh.faces()(f, 2);
-    r.vf.push_back({x0.row(v), x0.row(a), x0.row(b), x0.row(c), x1.row(v), x1.row(a), x1.row(b),
-                    x1.row(c)});
+    r.vf.push_back(
+        {x0.row(v), x0.row(a), x0.row(b), x0.row(c), x1.row(v), x1.row(a), x1.row(b), x1.row(c)});
   }
   for (const auto& [e1, e2] : ee_pairs) {
     const Index a = mesh.edges()(e1, 0), b = mesh.edges()(e1, 1), c = mesh.edges()(e2, 0),
                 d = mesh.edges()(e2, 1);
-    r.ee.push_back({x0.row(a), x0.row(b), x0.row(c), x0.row(d), x1.row(a), x1.row(b), x1.row(c),
-                    x1.row(d)});
+    r.ee.push_back(
+        {x0.row(a), x0.row(b), x0.row(c), x0.row(d), x1.row(a), x1.row(b), x1.row(c), x1.row(d)});
   }
   // Truth: the exact CCD (tests compare it with the rational oracle).
   for (const auto& q : r.vf) r.vf_truth.push_back(vertex_face_ccd(q).hit);
@@ -164,10 +164,22 @@ QuerySet extreme_spread() {
   for (int i = 0; i < 64; ++i) {
     const double a_x = (i & 1) ? tiny : 0.0, c_x = (i & 2) ? -tiny : tiny;
     const double y = 1.0 + (i >> 2);
-    r.ee.push_back({{a_x, 0, 0}, {huge, 0, 0}, {c_x, y, 1}, {c_x, y, 2},
-                    {a_x, 0, 0}, {huge, 0, 0}, {c_x, -y, -1}, {c_x, -y, 0}});
-    r.vf.push_back({{c_x, tiny, y}, {a_x, 0, 0}, {huge, 0, 0}, {0, huge, 0},
-                    {c_x, tiny, -y}, {a_x, 0, 0}, {huge, 0, 0}, {0, huge, 0}});
+    r.ee.push_back({{a_x, 0, 0},
+                    {huge, 0, 0},
+                    {c_x, y, 1},
+                    {c_x, y, 2},
+                    {a_x, 0, 0},
+                    {huge, 0, 0},
+                    {c_x, -y, -1},
+                    {c_x, -y, 0}});
+    r.vf.push_back({{c_x, tiny, y},
+                    {a_x, 0, 0},
+                    {huge, 0, 0},
+                    {0, huge, 0},
+                    {c_x, tiny, -y},
+                    {a_x, 0, 0},
+                    {huge, 0, 0},
+                    {0, huge, 0}});
   }
   oracle_truth(r);
   return r;
@@ -202,8 +214,8 @@ const QuerySet& set(int i) {
 }
 
 const char* set_name(int i) {
-  static const char* names[6] = {"funnel",        "erleben",    "unit-tests",
-                                 "folded-cloth",  "degenerate", "extreme-spread"};
+  static const char* names[6] = {"funnel",       "erleben",    "unit-tests",
+                                 "folded-cloth", "degenerate", "extreme-spread"};
   return names[i];
 }
 
@@ -243,9 +255,8 @@ void run_set(benchmark::State& state, const QuerySet& s, const std::vector<std::
   state.counters["gmp_queries"] = static_cast<double>(paths[static_cast<int>(CcdPath::gmp)]);
   state.counters["false_negatives"] = static_cast<double>(fn);
   state.counters["false_positives"] = static_cast<double>(fp);
-  state.counters["ns_per_query"] =
-      benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsRate |
-                                                     benchmark::Counter::kInvert);
+  state.counters["ns_per_query"] = benchmark::Counter(
+      static_cast<double>(n), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 std::vector<std::size_t> all(std::size_t n) {
@@ -258,9 +269,10 @@ void BM_Ccd(benchmark::State& state) {
   const int k = static_cast<int>(state.range(0));
   const QuerySet& s = set(k);
   state.SetLabel(set_name(k));
-  run_set(state, s, all(s.vf.size()), all(s.ee.size()),
-          [](const VertexFaceQuery& q) { return vertex_face_ccd(q); },
-          [](const EdgeEdgeQuery& q) { return edge_edge_ccd(q); });
+  run_set(
+      state, s, all(s.vf.size()), all(s.ee.size()),
+      [](const VertexFaceQuery& q) { return vertex_face_ccd(q); },
+      [](const EdgeEdgeQuery& q) { return edge_edge_ccd(q); });
 }
 
 void BM_CcdTier(benchmark::State& state) {
@@ -279,17 +291,19 @@ void BM_CcdTier(benchmark::State& state) {
     state.SkipWithError("no query of this set is decided by this tier");
     return;
   }
-  run_set(state, s, vf, ee, [](const VertexFaceQuery& q) { return vertex_face_ccd(q); },
-          [](const EdgeEdgeQuery& q) { return edge_edge_ccd(q); });
+  run_set(
+      state, s, vf, ee, [](const VertexFaceQuery& q) { return vertex_face_ccd(q); },
+      [](const EdgeEdgeQuery& q) { return edge_edge_ccd(q); });
 }
 
 void BM_ExactTier(benchmark::State& state) {
   const int k = static_cast<int>(state.range(0));
   const QuerySet& s = set(k);
   state.SetLabel(set_name(k));
-  run_set(state, s, all(s.vf.size()), all(s.ee.size()),
-          [](const VertexFaceQuery& q) { return detail::vertex_face_ccd_exact(q); },
-          [](const EdgeEdgeQuery& q) { return detail::edge_edge_ccd_exact(q); });
+  run_set(
+      state, s, all(s.vf.size()), all(s.ee.size()),
+      [](const VertexFaceQuery& q) { return detail::vertex_face_ccd_exact(q); },
+      [](const EdgeEdgeQuery& q) { return detail::edge_edge_ccd_exact(q); });
 }
 
 void BM_Naive(benchmark::State& state) {

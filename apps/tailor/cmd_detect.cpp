@@ -86,8 +86,8 @@ void dump_queries(const std::string& prefix, const TriangleMesh& mesh, const Pos
   std::vector<EdgeEdgePair> ee_pairs;
   LowLevelCounts counts;
   generator.generate(ctps, isolated, x0, x1,
-                     {config.feature_assignment, config.primitive_boxes,
-                      config.coplanarity_filter, config.adjacency_culling},
+                     {config.feature_assignment, config.primitive_boxes, config.coplanarity_filter,
+                      config.adjacency_culling},
                      vf_pairs, ee_pairs, counts);
   const FaceArray& faces = mesh.faces();
   const EdgeArray& edges = mesh.edges();
@@ -95,15 +95,15 @@ void dump_queries(const std::string& prefix, const TriangleMesh& mesh, const Pos
   vf.reserve(vf_pairs.size());
   for (const auto& [v, f] : vf_pairs) {
     const Index a = faces(f, 0), b = faces(f, 1), c = faces(f, 2);
-    vf.push_back({x0.row(v), x0.row(a), x0.row(b), x0.row(c), x1.row(v), x1.row(a), x1.row(b),
-                  x1.row(c)});
+    vf.push_back(
+        {x0.row(v), x0.row(a), x0.row(b), x0.row(c), x1.row(v), x1.row(a), x1.row(b), x1.row(c)});
   }
   std::vector<EdgeEdgeQuery> ee;
   ee.reserve(ee_pairs.size());
   for (const auto& [e1, e2] : ee_pairs) {
     const Index a = edges(e1, 0), b = edges(e1, 1), c = edges(e2, 0), d = edges(e2, 1);
-    ee.push_back({x0.row(a), x0.row(b), x0.row(c), x0.row(d), x1.row(a), x1.row(b), x1.row(c),
-                  x1.row(d)});
+    ee.push_back(
+        {x0.row(a), x0.row(b), x0.row(c), x0.row(d), x1.row(a), x1.row(b), x1.row(c), x1.row(d)});
   }
   write_ccd_queries(prefix + "vf.csv", vf);
   write_ccd_queries(prefix + "ee.csv", ee);
@@ -168,16 +168,17 @@ const CommandRegistration registration{
       command->add_option("MESH_T1", args->mesh_t1, "Mesh at the end of the step (same topology)")
           ->required()
           ->check(CLI::ExistingFile);
-      CLI::Option* brute =
-          command->add_flag("--brute-force", args->brute_force, "Test every feature pair (the oracle)");
+      CLI::Option* brute = command->add_flag("--brute-force", args->brute_force,
+                                             "Test every feature pair (the oracle)");
       command->add_option("--json", args->json_path, "Write collisions and statistics as JSON");
       command
           ->add_option("--observers", args->observers_path,
                        "Radial-view section loops: JSON {\"loops\": [[vertex ids], ...]}")
           ->check(CLI::ExistingFile);
-      command->add_option("--dump-queries", args->dump_prefix,
-                          "Write the pairs sent to the exact CCD as query CSVs PREFIXvf.csv "
-                          "and PREFIXee.csv (for ccd-check and benchmarks)")
+      command
+          ->add_option("--dump-queries", args->dump_prefix,
+                       "Write the pairs sent to the exact CCD as query CSVs PREFIXvf.csv "
+                       "and PREFIXee.csv (for ccd-check and benchmarks)")
           ->excludes(brute);
       args->detection.add_to(*command);
       return [args] { return run_detect(*args); };

@@ -24,7 +24,9 @@ Ball random_ball(std::mt19937_64& rng) {
   const int e = static_cast<int>(rng() % 601) - 300;
   const double m = std::ldexp(unit(rng), e);
   const int kind = static_cast<int>(rng() % 3);
-  const double r = kind == 0 ? 0.0 : std::fabs(m) * std::ldexp(std::fabs(unit(rng)), -(static_cast<int>(rng() % 60)));
+  const double r =
+      kind == 0 ? 0.0
+                : std::fabs(m) * std::ldexp(std::fabs(unit(rng)), -(static_cast<int>(rng() % 60)));
   return {m, r};
 }
 

@@ -234,27 +234,27 @@ TEST(CcdDegenerate, VfCoplanarRotatingPlane) {
   // x = 0: (X, Y, 0) -> (0, Y, X). Contact status never changes.
   auto turn = [](double x, double y) { return Vec3(0.0, y, x); };
   auto query = [&](double px, double py) {
-    return VertexFaceQuery{{px, py, 0}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+    return VertexFaceQuery{{px, py, 0},  {0, 0, 0},  {1, 0, 0},  {0, 1, 0},
                            turn(px, py), turn(0, 0), turn(1, 0), turn(0, 1)};
   };
-  expect_vf(query(0.25, 0.25), true, 0.0);      // inside throughout
-  expect_vf(query(0.5, 0.5), true, 0.0);        // on the hypotenuse throughout
-  expect_vf(query(0.5, up(0.5)), false);        // one ulp outside it
-  expect_vf(query(-kTiny, 0.25), false);        // a subnormal outside edge ca
-  expect_vf(query(0.0, 0.0), true, 0.0);        // at a vertex
+  expect_vf(query(0.25, 0.25), true, 0.0);  // inside throughout
+  expect_vf(query(0.5, 0.5), true, 0.0);    // on the hypotenuse throughout
+  expect_vf(query(0.5, up(0.5)), false);    // one ulp outside it
+  expect_vf(query(-kTiny, 0.25), false);    // a subnormal outside edge ca
+  expect_vf(query(0.0, 0.0), true, 0.0);    // at a vertex
 }
 
 TEST(CcdDegenerate, EeCoplanarRotatingPlane) {
   auto turn = [](double x, double y) { return Vec3(0.0, y, x); };
   auto query = [&](double cx, double cy, double dx, double dy) {
-    return EdgeEdgeQuery{{0, 0, 0},      {1, 0, 0},      {cx, cy, 0},      {dx, dy, 0},
-                         turn(0, 0),     turn(1, 0),     turn(cx, cy),     turn(dx, dy)};
+    return EdgeEdgeQuery{{0, 0, 0},  {1, 0, 0},  {cx, cy, 0},  {dx, dy, 0},
+                         turn(0, 0), turn(1, 0), turn(cx, cy), turn(dx, dy)};
   };
-  expect_ee(query(0.5, -1, 0.5, 1), true, 0.0);           // crossing throughout
-  expect_ee(query(0.5, 0, 0.5, 1), true, 0.0);            // endpoint on the edge
-  expect_ee(query(0.5, up(0.0), 0.5, 1), false);          // a subnormal above it
-  expect_ee(query(1, 0, 2, 0), true, 0.0);                // collinear, touching at b
-  expect_ee(query(up(1.0), 0, 2, 0), false);              // collinear, one ulp apart
+  expect_ee(query(0.5, -1, 0.5, 1), true, 0.0);   // crossing throughout
+  expect_ee(query(0.5, 0, 0.5, 1), true, 0.0);    // endpoint on the edge
+  expect_ee(query(0.5, up(0.0), 0.5, 1), false);  // a subnormal above it
+  expect_ee(query(1, 0, 2, 0), true, 0.0);        // collinear, touching at b
+  expect_ee(query(up(1.0), 0, 2, 0), false);      // collinear, one ulp apart
 }
 
 TEST(CcdDegenerate, ExtremeExponentSpread) {
@@ -265,12 +265,11 @@ TEST(CcdDegenerate, ExtremeExponentSpread) {
   // segment starts at +1e-309 while c crosses at 0 (a miss).
   const double huge = 1e148, tiny = 1e-309;
   auto query = [&](double a_x, double c_x) {
-    return EdgeEdgeQuery{{a_x, 0, 0},   {huge, 0, 0},    {c_x, 1, 1},    {c_x, 1, 2},
-                         {a_x, 0, 0},   {huge, 0, 0},    {c_x, -1, -1},  {c_x, -1, 0}};
+    return EdgeEdgeQuery{{a_x, 0, 0}, {huge, 0, 0}, {c_x, 1, 1},   {c_x, 1, 2},
+                         {a_x, 0, 0}, {huge, 0, 0}, {c_x, -1, -1}, {c_x, -1, 0}};
   };
-  for (const auto& [a_x, c_x, hit] :
-       {std::tuple{0.0, tiny, true}, std::tuple{0.0, -tiny, false}, std::tuple{tiny, 0.0, false},
-        std::tuple{tiny, tiny, true}}) {
+  for (const auto& [a_x, c_x, hit] : {std::tuple{0.0, tiny, true}, std::tuple{0.0, -tiny, false},
+                                      std::tuple{tiny, 0.0, false}, std::tuple{tiny, tiny, true}}) {
     const EdgeEdgeQuery q = query(a_x, c_x);
     const CcdResult r = edge_edge_ccd(q);
     EXPECT_EQ(r.hit, hit) << a_x << " " << c_x;
@@ -282,8 +281,8 @@ TEST(CcdDegenerate, ExtremeExponentSpread) {
     }
   }
   // The same with a vertex and a triangle spanning 1e148.
-  const VertexFaceQuery vf{{tiny, tiny, 1},      {0, 0, 0}, {huge, 0, 0}, {0, huge, 0},
-                           {tiny, tiny, -1},     {0, 0, 0}, {huge, 0, 0}, {0, huge, 0}};
+  const VertexFaceQuery vf{{tiny, tiny, 1},  {0, 0, 0}, {huge, 0, 0}, {0, huge, 0},
+                           {tiny, tiny, -1}, {0, 0, 0}, {huge, 0, 0}, {0, huge, 0}};
   EXPECT_TRUE(vertex_face_ccd(vf).hit);
   EXPECT_TRUE(test::oracle(vf).hit);
   const VertexFaceQuery vf_out{{-tiny, tiny, 1},  {0, 0, 0}, {huge, 0, 0}, {0, huge, 0},

@@ -85,18 +85,19 @@ TEST(CcdReferenceData, EveryTierAndTheOracleAgreeWithTruth) {
   for (const auto& r : reference()) {
     for (std::size_t i = 0; i < r.file.size(); ++i) {
       const bool vf = r.file.kind == CcdQueryKind::vertex_face;
-      const CcdResult oracle = vf ? test::oracle(r.file.vertex_face[i]) : test::oracle(r.file.edge_edge[i]);
+      const CcdResult oracle =
+          vf ? test::oracle(r.file.vertex_face[i]) : test::oracle(r.file.edge_edge[i]);
       EXPECT_EQ(oracle.hit, r.truth[i]) << r.file.path << " query " << i;
-      const CcdResult exact = vf ? test::exact_tier(r.file.vertex_face[i])
-                                 : test::exact_tier(r.file.edge_edge[i]);
+      const CcdResult exact =
+          vf ? test::exact_tier(r.file.vertex_face[i]) : test::exact_tier(r.file.edge_edge[i]);
       const CcdResult gmp = vf ? test::exact_tier_gmp(r.file.vertex_face[i])
                                : test::exact_tier_gmp(r.file.edge_edge[i]);
       EXPECT_TRUE(exact.path == CcdPath::exact || exact.path == CcdPath::gmp);
       ++paths[static_cast<int>(exact.path)];
       EXPECT_TRUE(test::agrees(exact, oracle)) << r.file.path << " query " << i;
       EXPECT_TRUE(test::agrees(gmp, oracle)) << r.file.path << " query " << i;
-      const auto dbl = vf ? test::double_tier(r.file.vertex_face[i])
-                          : test::double_tier(r.file.edge_edge[i]);
+      const auto dbl =
+          vf ? test::double_tier(r.file.vertex_face[i]) : test::double_tier(r.file.edge_edge[i]);
       if (dbl) {
         EXPECT_TRUE(test::agrees(*dbl, oracle)) << r.file.path << " query " << i;
       }

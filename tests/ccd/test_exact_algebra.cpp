@@ -112,13 +112,13 @@ TEST(ExactAlgebra, RootsInUnitMatchRationalReference) {
 TEST(ExactAlgebra, RootsOfRandomAndSpecialPolynomials) {
   // Roots at both ends, a triple root, a double root at a dyadic point, irrational roots,
   // roots 2^-40 apart (deep subdivision).
-  expect_same_roots<Fixed>({0, -1, 1});                  // t (t - 1)
-  expect_same_roots<Fixed>({-1, 3, -3, 1});              // (t - 1)^3
-  expect_same_roots<Fixed>({-1, 6, -12, 8});             // (2t - 1)^3
-  expect_same_roots<Fixed>({1, -4, 4});                  // (2t - 1)^2
-  expect_same_roots<Fixed>({-1, 0, 2});                  // 1/sqrt(2)
-  expect_same_roots<Fixed>({1, -5, 5});                  // (5 ± sqrt 5) / 10, both in (0, 1)
-  expect_same_roots<Fixed>({-3, 11, -13, 5});            // (t - 1)^2 (5t - 3)
+  expect_same_roots<Fixed>({0, -1, 1});        // t (t - 1)
+  expect_same_roots<Fixed>({-1, 3, -3, 1});    // (t - 1)^3
+  expect_same_roots<Fixed>({-1, 6, -12, 8});   // (2t - 1)^3
+  expect_same_roots<Fixed>({1, -4, 4});        // (2t - 1)^2
+  expect_same_roots<Fixed>({-1, 0, 2});        // 1/sqrt(2)
+  expect_same_roots<Fixed>({1, -5, 5});        // (5 ± sqrt 5) / 10, both in (0, 1)
+  expect_same_roots<Fixed>({-3, 11, -13, 5});  // (t - 1)^2 (5t - 3)
   const long two40 = 1L << 40;
   expect_same_roots<Fixed>(multiply({-two40, 2 * two40}, {-(two40 + 1), 2 * two40}));
   std::mt19937_64 rng(9);

@@ -58,7 +58,7 @@ void expect_same(const FixedInt<N>& f, const mpz_class& m) {
   const double a = f.approximate(e);
   if (m != 0) {
     const mpq_class approx = mpq_class(a) * (e >= 0 ? mpq_class(mpz_class(1) << e)
-                                                   : mpq_class(mpz_class(1), mpz_class(1) << -e));
+                                                    : mpq_class(mpz_class(1), mpz_class(1) << -e));
     const mpq_class error = abs(approx - mpq_class(m));
     EXPECT_LE(error, abs(mpq_class(m)) / (mpz_class(1) << 52));
   } else {
@@ -98,7 +98,8 @@ TEST(FixedInt, CarriesAcrossLimbs) {
   expect_same(ones, m);
   expect_same(ones + FixedInt<8>(1), m + 1);
   expect_same(ones * ones, m * m);
-  expect_same(FixedInt<8>::scaled(0xffffffffffffffffu, 63, true), -(mpz_class("18446744073709551615") << 63));
+  expect_same(FixedInt<8>::scaled(0xffffffffffffffffu, 63, true),
+              -(mpz_class("18446744073709551615") << 63));
 }
 
 TEST(FixedInt, ThrowsBeyondCapacity) {

@@ -89,20 +89,23 @@ TEST(RationalPolynomial, EarliestSolutionWithZeroPolynomial) {
   EXPECT_EQ(earliest_solution(zero, {{neg_sq, false}}, kTol).value_or(q(-1)), q(1, 2));
   EXPECT_FALSE(earliest_solution(zero, {{neg_sq, true}}, kTol).has_value());
   // Everything from t = 0: 1 - t >= 0.
-  EXPECT_EQ(earliest_solution(zero, {{RationalPoly::linear(q(1), -1), false}}, kTol).value_or(q(-1)),
-            q(0));
+  EXPECT_EQ(
+      earliest_solution(zero, {{RationalPoly::linear(q(1), -1), false}}, kTol).value_or(q(-1)),
+      q(0));
   // Intersection of [1/3, 1] and [0, 1/4]: empty; of t >= 1/3 and t <= 2/3 with (t-1/2)^2 > 0.
   const RationalPoly third = RationalPoly::linear(q(-1, 3), 1);
   const RationalPoly quarter = RationalPoly::linear(q(1, 4), -1);
   EXPECT_FALSE(earliest_solution(zero, {{third, false}, {quarter, false}}, kTol).has_value());
   const auto mixed = earliest_solution(
-      zero, {{third, false}, {RationalPoly::linear(q(2, 3), -1), false}, {half * half, true}}, kTol);
+      zero, {{third, false}, {RationalPoly::linear(q(2, 3), -1), false}, {half * half, true}},
+      kTol);
   ASSERT_TRUE(mixed.has_value());
   EXPECT_LE(*mixed, q(1, 3));  // a lower bound within the tolerance (1/3 is not dyadic)
   EXPECT_GE(*mixed, q(1, 3) - kTol);
   // Only at t = 1.
-  EXPECT_EQ(earliest_solution(zero, {{RationalPoly::linear(q(-1), 1), false}}, kTol).value_or(q(-1)),
-            q(1));
+  EXPECT_EQ(
+      earliest_solution(zero, {{RationalPoly::linear(q(-1), 1), false}}, kTol).value_or(q(-1)),
+      q(1));
 }
 
 }  // namespace

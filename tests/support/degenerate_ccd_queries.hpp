@@ -38,10 +38,18 @@ enum class DegenerateCategory : int {
 inline constexpr int kDegenerateCategoryCount = 12;
 
 inline const char* degenerate_category_name(DegenerateCategory c) {
-  static const char* const names[kDegenerateCategoryCount] = {
-      "vf_face_interior", "vf_edge",          "vf_vertex",           "vf_coplanar_sliding",
-      "vf_coplanar_affine", "vf_flat_triangle", "ee_interior_crossing", "ee_endpoint_on_edge",
-      "ee_endpoint_endpoint", "ee_parallel",    "ee_coplanar_sliding", "ee_point_edge"};
+  static const char* const names[kDegenerateCategoryCount] = {"vf_face_interior",
+                                                              "vf_edge",
+                                                              "vf_vertex",
+                                                              "vf_coplanar_sliding",
+                                                              "vf_coplanar_affine",
+                                                              "vf_flat_triangle",
+                                                              "ee_interior_crossing",
+                                                              "ee_endpoint_on_edge",
+                                                              "ee_endpoint_endpoint",
+                                                              "ee_parallel",
+                                                              "ee_coplanar_sliding",
+                                                              "ee_point_edge"};
   return names[static_cast<int>(c)];
 }
 
@@ -65,7 +73,8 @@ class DegenerateQueryGenerator {
     q.category = static_cast<DegenerateCategory>(m_next++ % kDegenerateCategoryCount);
     m_grid = kGrids[pick(4)];
     std::array<Vec3, 8> x = build(q.category);
-    q.vertex_face = static_cast<int>(q.category) <= static_cast<int>(DegenerateCategory::vf_flat_triangle);
+    q.vertex_face =
+        static_cast<int>(q.category) <= static_cast<int>(DegenerateCategory::vf_flat_triangle);
     if (pick(4) == 0) {  // away from the origin: wider integers for the exact tier
       const Vec3 offset = point() * 16.0;
       for (auto& v : x) v += offset;
@@ -99,8 +108,8 @@ class DegenerateQueryGenerator {
   /// A multiple of 2^-G in [-1, 1].
   double coordinate() {
     const std::int64_t m = std::int64_t{1} << m_grid;
-    return std::ldexp(static_cast<double>(std::uniform_int_distribution<std::int64_t>(-m, m)(m_rng)),
-                      -m_grid);
+    return std::ldexp(
+        static_cast<double>(std::uniform_int_distribution<std::int64_t>(-m, m)(m_rng)), -m_grid);
   }
   Vec3 point() { return {coordinate(), coordinate(), coordinate()}; }
   /// A multiple of 1/8 in [lo, hi] (in eighths).

@@ -71,12 +71,12 @@ template <class Z>
 struct RootPoint {
   enum class Kind : unsigned char { rational, quadratic, isolated };
   Kind kind = Kind::rational;
-  Z num, den;  ///< rational: num / den, den > 0
-  Poly<Z> poly;  ///< quadratic: A t^2 + B t + C with D > 0; isolated: squarefree P
-  Z discriminant;  ///< quadratic: D = B^2 - 4AC
-  int sigma = 1;  ///< quadratic: the root is (-B + sigma sqrt(D)) / 2A
+  Z num, den;        ///< rational: num / den, den > 0
+  Poly<Z> poly;      ///< quadratic: A t^2 + B t + C with D > 0; isolated: squarefree P
+  Z discriminant;    ///< quadratic: D = B^2 - 4AC
+  int sigma = 1;     ///< quadratic: the root is (-B + sigma sqrt(D)) / 2A
   Dyadic<Z> lo, hi;  ///< isolated: the open isolating interval
-  int sign_lo = 0;  ///< isolated: sign of P at lo (P at hi has the opposite sign)
+  int sign_lo = 0;   ///< isolated: sign of P at lo (P at hi has the opposite sign)
   double enc_lo = -std::numeric_limits<double>::infinity();  ///< certified lower end
   double enc_hi = std::numeric_limits<double>::infinity();   ///< certified upper end
 

@@ -59,8 +59,8 @@ inline Ball operator-(const Ball& a) {
 
 inline Ball operator*(const Ball& a, const Ball& b) {
   const double m = a.m * b.m;
-  const double r = std::fabs(a.m) * b.r + a.r * (std::fabs(b.m) + b.r) + kBallU * std::fabs(m) +
-                   kBallEta;
+  const double r =
+      std::fabs(a.m) * b.r + a.r * (std::fabs(b.m) + b.r) + kBallU * std::fabs(m) + kBallEta;
   return {m, r * kBallInflate};
 }
 

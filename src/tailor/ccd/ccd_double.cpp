@@ -145,7 +145,8 @@ Verdict vf_verdict(const Motion& motion, const Ball& t, const VertexFaceQuery* q
   if (count == 0) return Verdict::inside;
   if (root == nullptr) return Verdict::unknown;
   int exact[3];
-  if (!vertex_face_signs_at_root(*query, k, open, count, root->lo, root->hi, root->sign_lo, exact)) {
+  if (!vertex_face_signs_at_root(*query, k, open, count, root->lo, root->hi, root->sign_lo,
+                                 exact)) {
     return Verdict::unknown;
   }
   root->used_exact = true;
@@ -184,8 +185,7 @@ Verdict ee_verdict(const Motion& motion, const Ball& t, const EdgeEdgeQuery* que
 
 /// A bracket [t_a, t_b] inside the isolating node where f certainly changes sign, at most
 /// kToiWidth wide, or nullopt.
-std::optional<std::array<double, 2>> bracket_root(const Cubic& f, const Node& node,
-                                                  int sign_left) {
+std::optional<std::array<double, 2>> bracket_root(const Cubic& f, const Node& node, int sign_left) {
   // Newton from the middle, kept inside the node, until its step is well below the
   // bracket we want (convergence is quadratic: the error is then far smaller still).
   double t = 0.5 * (node.t1 + node.t2), step = node.t2 - node.t1;
@@ -328,8 +328,8 @@ std::optional<Cubic> make_cubic(const CoplanarityBernstein& filter) {
   f.b[3] = filter.value[3];
   double error = 0.0, magnitude = 0.0;
   for (int i = 0; i < 4; ++i) {
-    const double e = (i == 1 || i == 2) ? filter.bound[i] / 3.0 + kU * std::fabs(f.b[i])
-                                        : filter.bound[i];
+    const double e =
+        (i == 1 || i == 2) ? filter.bound[i] / 3.0 + kU * std::fabs(f.b[i]) : filter.bound[i];
     error = std::max(error, e);
     magnitude = std::max(magnitude, std::fabs(f.b[i]));
   }
@@ -352,8 +352,8 @@ CoplanarityBernstein coplanarity_bernstein(const VertexFaceQuery& q) {
 
 CoplanarityBernstein coplanarity_bernstein(const EdgeEdgeQuery& q) {
   CoplanarityBernstein r;
-  r.valid = coplanarity_bernstein_double(q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1,
-                                         q.ea1_t1, q.eb0_t1, q.eb1_t1, r.value, r.bound);
+  r.valid = coplanarity_bernstein_double(q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1, q.ea1_t1,
+                                         q.eb0_t1, q.eb1_t1, r.value, r.bound);
   return r;
 }
 
@@ -364,9 +364,8 @@ std::optional<CcdResult> vertex_face_ccd_double(const VertexFaceQuery& q,
   const Vec3* t0[4] = {&q.a_t0, &q.b_t0, &q.c_t0, &q.p_t0};
   const Vec3* t1[4] = {&q.a_t1, &q.b_t1, &q.c_t1, &q.p_t1};
   const Motion motion = make_motion(t0, t1);
-  return decide(*f, [&](const Ball& t, const RootBracket* root) {
-    return vf_verdict(motion, t, &q, root);
-  });
+  return decide(
+      *f, [&](const Ball& t, const RootBracket* root) { return vf_verdict(motion, t, &q, root); });
 }
 
 std::optional<CcdResult> edge_edge_ccd_double(const EdgeEdgeQuery& q,
@@ -376,9 +375,8 @@ std::optional<CcdResult> edge_edge_ccd_double(const EdgeEdgeQuery& q,
   const Vec3* t0[4] = {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0};
   const Vec3* t1[4] = {&q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1};
   const Motion motion = make_motion(t0, t1);
-  return decide(*f, [&](const Ball& t, const RootBracket* root) {
-    return ee_verdict(motion, t, &q, root);
-  });
+  return decide(
+      *f, [&](const Ball& t, const RootBracket* root) { return ee_verdict(motion, t, &q, root); });
 }
 
 std::optional<CcdResult> vertex_face_ccd_double(const VertexFaceQuery& q) {

@@ -108,12 +108,13 @@ CcdResult edge_edge_with(const EdgeEdgeQuery& q, CcdPath path) {
 template <class Z, class Polys, class Condition>
 void signs_at_root(const Polys& s, Condition&& condition, const int* which, int count, double lo,
                    double hi, int sign_lo, int* signs) {
-  RootPoint<Z> r = RootPoint<Z>::isolated(s.f, Dyadic<Z>::from_double(lo),
-                                          Dyadic<Z>::from_double(hi), sign_lo);
+  RootPoint<Z> r =
+      RootPoint<Z>::isolated(s.f, Dyadic<Z>::from_double(lo), Dyadic<Z>::from_double(hi), sign_lo);
   for (int i = 0; i < count; ++i) {
     const Poly<Z>& q = condition(which[i]);
     // The double tier could not separate these from zero: test for zero first.
-    signs[i] = r.kind == RootPoint<Z>::Kind::isolated && vanishes_at_isolated(q, r) ? 0 : sign_at(q, r);
+    signs[i] =
+        r.kind == RootPoint<Z>::Kind::isolated && vanishes_at_isolated(q, r) ? 0 : sign_at(q, r);
   }
 }
 

@@ -31,8 +31,8 @@ CcdResult edge_edge_ccd_exact_gmp(const EdgeEdgeQuery& query);
 /// EE conditions: 0 m_k, 1 ((b-a)×(c-a))_k, 2 ((b-a)×(d-a))_k, 3 ((d-c)×(a-c))_k,
 /// 4 ((d-c)×(b-c))_k. Fills signs[i] for which[i]; false when the fixed-size integers
 /// overflow (the caller then hands the query to the exact tier).
-bool vertex_face_signs_at_root(const VertexFaceQuery& query, int axis, const int* which,
-                               int count, double lo, double hi, int sign_lo, int* signs);
+bool vertex_face_signs_at_root(const VertexFaceQuery& query, int axis, const int* which, int count,
+                               double lo, double hi, int sign_lo, int* signs);
 /// EE form of vertex_face_signs_at_root.
 bool edge_edge_signs_at_root(const EdgeEdgeQuery& query, int axis, const int* which, int count,
                              double lo, double hi, int sign_lo, int* signs);

@@ -55,8 +55,9 @@ std::array<int, 3> axes_by_size(const PolyVec<Z>& v, const RootPoint<Z>& r) {
       size[k] = -1.0;
     } else if (finite) {
       const int shift = scale_exponent(p);
-      size[k] = std::ldexp(std::fabs(evaluate_ball(p, Ball(0.5 * r.enc_lo + 0.5 * r.enc_hi), shift).m),
-                           std::min(shift, 1000));
+      size[k] =
+          std::ldexp(std::fabs(evaluate_ball(p, Ball(0.5 * r.enc_lo + 0.5 * r.enc_hi), shift).m),
+                     std::min(shift, 1000));
     }
   }
   std::array<int, 3> order{0, 1, 2};
@@ -66,8 +67,7 @@ std::array<int, 3> axes_by_size(const PolyVec<Z>& v, const RootPoint<Z>& r) {
 
 /// Point p on the closed segment xy at r: cross = 0, along >= 0, within >= 0.
 template <class Z>
-bool on_segment_at(const PolyVec<Z>& p, const PolyVec<Z>& x, const PolyVec<Z>& y,
-                   RootPoint<Z>& r) {
+bool on_segment_at(const PolyVec<Z>& p, const PolyVec<Z>& x, const PolyVec<Z>& y, RootPoint<Z>& r) {
   // The point_segment conditions of ccd_systems.hpp, built one at a time (most fail early).
   const PolyVec<Z> px = p - x, yx = y - x;
   for (int k = 0; k < 3; ++k) {
@@ -124,7 +124,8 @@ struct VfPolys {
              s * sign_at(edge(2, k), r) >= 0;
     }
     // Degenerate triangle at r: p on one of its edges.
-    return on_segment_at(w, zero, u, r) || on_segment_at(w, u, v, r) || on_segment_at(w, v, zero, r);
+    return on_segment_at(w, zero, u, r) || on_segment_at(w, u, v, r) ||
+           on_segment_at(w, v, zero, r);
   }
 
  private:
@@ -401,10 +402,9 @@ std::optional<double> earliest_coplanar_contact(const VfPolys<Z>& s) {
     for (int i = 0; i < count; ++i) {
       const int k = axes[i];
       const Poly<Z>& nk = component(s.n, k);
-      const std::array<C, 4> conds{C{&nk, nullptr, 1, R::nonzero},
-                                   C{&nk, &s.edge(0, k), 1, R::nonnegative},
-                                   C{&nk, &s.edge(1, k), 1, R::nonnegative},
-                                   C{&nk, &s.edge(2, k), 1, R::nonnegative}};
+      const std::array<C, 4> conds{
+          C{&nk, nullptr, 1, R::nonzero}, C{&nk, &s.edge(0, k), 1, R::nonnegative},
+          C{&nk, &s.edge(1, k), 1, R::nonnegative}, C{&nk, &s.edge(2, k), 1, R::nonnegative}};
       keep(earliest_solution<Z, 4>(conds, 4));
     }
   }

@@ -221,7 +221,7 @@ class FixedInt {
 
   /// Copies n limbs; small counts without a string-copy instruction's start-up cost.
   [[gnu::always_inline]] static void copy_limbs(std::uint64_t* to, const std::uint64_t* from,
-                                               int n) {
+                                                int n) {
     switch (n) {
       case 4:
         to[3] = from[3];
@@ -258,8 +258,8 @@ class FixedInt {
     FixedInt r;
     std::uint64_t carry = 0;
     for (int i = 0; i < big.m_size; ++i) {
-      const Limb2 t = static_cast<Limb2>(big.m_limb[i]) + (i < small.m_size ? small.m_limb[i] : 0) +
-                      carry;
+      const Limb2 t =
+          static_cast<Limb2>(big.m_limb[i]) + (i < small.m_size ? small.m_limb[i] : 0) + carry;
       r.m_limb[i] = static_cast<std::uint64_t>(t);
       carry = static_cast<std::uint64_t>(t >> 64);
     }

@@ -73,7 +73,8 @@ RationalPoly operator*(const RationalPoly& a, const RationalPoly& b) {
 namespace {
 
 /// Long division: a = q b + r.
-void divide(const RationalPoly& a, const RationalPoly& b, RationalPoly* quotient, RationalPoly* remainder) {
+void divide(const RationalPoly& a, const RationalPoly& b, RationalPoly* quotient,
+            RationalPoly* remainder) {
   assert(!b.is_zero());
   std::vector<mpq_class> r = a.coefficients();
   const auto& bc = b.coefficients();
@@ -146,7 +147,8 @@ void isolate(const RationalPoly& q, const std::vector<RationalPoly>& sturm, cons
 }
 
 /// Bernstein coefficients of q on [lo, hi].
-std::vector<mpq_class> bernstein_on(const RationalPoly& q, const mpq_class& lo, const mpq_class& hi) {
+std::vector<mpq_class> bernstein_on(const RationalPoly& q, const mpq_class& lo,
+                                    const mpq_class& hi) {
   std::vector<mpq_class> a = q.coefficients();
   const int n = static_cast<int>(a.size()) - 1;
   // Taylor shift to lo: a(t) -> a(lo + s).

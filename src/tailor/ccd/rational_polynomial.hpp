@@ -1,8 +1,8 @@
 #pragma once
 /// @file
 /// Exact univariate polynomials over the rationals (GMP) and the generic decision
-/// procedure of the rational reference CCD (ccd_rational.hpp): "the earliest t in [0, 1] with P(t) = 0 and sign
-/// conditions Q_i(t) >= 0 or > 0". Internal to the ccd module (and its tests).
+/// procedure of the rational reference CCD (ccd_rational.hpp): "the earliest t in [0, 1] with P(t)
+/// = 0 and sign conditions Q_i(t) >= 0 or > 0". Internal to the ccd module (and its tests).
 
 #include <gmpxx.h>
 

@@ -65,8 +65,8 @@ void rational_cubic_roots(const Poly<Z>& p, UnitRoots<Z>& out) {
   UnitRoots<Z> tmp;
   add_rational_if_in_unit(n1, d1, tmp);
   add_rational_if_in_unit(n2, d2, tmp);
-  if (tmp.count == 2 && compare(tmp.root[0].num * tmp.root[1].den,
-                                tmp.root[1].num * tmp.root[0].den) > 0) {
+  if (tmp.count == 2 &&
+      compare(tmp.root[0].num * tmp.root[1].den, tmp.root[1].num * tmp.root[0].den) > 0) {
     std::swap(tmp.root[0], tmp.root[1]);
   }
   for (int i = 0; i < tmp.count; ++i) out.add(std::move(tmp.root[i]));
