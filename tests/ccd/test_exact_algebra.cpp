@@ -11,7 +11,7 @@
 #include "ccd_test_support.hpp"
 #include "tailor/ccd/algebraic_point.hpp"
 #include "tailor/ccd/big_int.hpp"
-#include "tailor/ccd/fixed_int.hpp"
+#include "tailor/geometry/fixed_int.hpp"
 #include "tailor/ccd/rational_polynomial.hpp"
 #include "tailor/ccd/unit_roots.hpp"
 

@@ -27,7 +27,7 @@
 #include <utility>
 
 #include "tailor/ccd/ball.hpp"
-#include "tailor/ccd/fixed_int.hpp"
+#include "tailor/geometry/fixed_int.hpp"
 #include "tailor/ccd/int_poly.hpp"
 
 namespace tailor::detail {

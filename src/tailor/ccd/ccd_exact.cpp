@@ -14,7 +14,7 @@
 
 #include "tailor/ccd/big_int.hpp"
 #include "tailor/ccd/exact_contact.hpp"
-#include "tailor/ccd/fixed_int.hpp"
+#include "tailor/geometry/fixed_int.hpp"
 
 namespace tailor::detail {
 
@@ -35,18 +35,6 @@ void check_finite(const Points& x) {
   }
 }
 
-/// |v| = mantissa 2^exponent with an odd mantissa (v finite and nonzero).
-void decompose(double v, std::uint64_t& mantissa, int& exponent) {
-  const auto bits = std::bit_cast<std::uint64_t>(v);
-  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
-  const std::uint64_t fraction = bits & ((std::uint64_t{1} << 52) - 1);
-  mantissa = biased == 0 ? fraction : (fraction | (std::uint64_t{1} << 52));
-  exponent = biased == 0 ? -1074 : biased - 1075;
-  const int zeros = std::countr_zero(mantissa);
-  mantissa >>= zeros;
-  exponent += zeros;
-}
-
 /// Points 1..3 minus point 0, as linear polynomials in t, all coordinates scaled by one
 /// power of two that makes them integers (which scales every condition by a positive
 /// constant: signs and roots do not change).
@@ -61,7 +49,7 @@ std::array<PolyVec<Z>, 3> relative_polys(const Points& x) {
       mantissa[i][k] = 0;
       exponent[i][k] = 0;
       if (v == 0.0) continue;
-      decompose(v, mantissa[i][k], exponent[i][k]);
+      decompose_double(v, mantissa[i][k], exponent[i][k]);
       lowest = std::min(lowest, exponent[i][k]);
     }
   }

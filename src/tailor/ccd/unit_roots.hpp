@@ -19,7 +19,7 @@
 #include <utility>
 
 #include "tailor/ccd/algebraic_point.hpp"
-#include "tailor/ccd/fixed_int.hpp"
+#include "tailor/geometry/fixed_int.hpp"
 #include "tailor/ccd/int_poly.hpp"
 
 namespace tailor::detail {

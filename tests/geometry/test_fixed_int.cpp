@@ -1,5 +1,5 @@
-/// FixedInt against GMP on random operands of every size up to its capacity, the
-/// capacity limit itself, and BigInt's identical interface.
+/// FixedInt against GMP on random operands of every size up to its capacity, and the
+/// capacity limit itself.
 
 #include <gtest/gtest.h>
 #include <gmpxx.h>
@@ -7,9 +7,8 @@
 #include <cmath>
 #include <random>
 
-#include "ccd_test_support.hpp"
-#include "tailor/ccd/big_int.hpp"
-#include "tailor/ccd/fixed_int.hpp"
+#include "support/sanitized.hpp"
+#include "tailor/geometry/fixed_int.hpp"
 
 namespace tailor::detail {
 namespace {
@@ -68,7 +67,7 @@ void expect_same(const FixedInt<N>& f, const mpz_class& m) {
 
 TEST(FixedInt, ArithmeticMatchesGmp) {
   std::mt19937_64 rng(11);
-  const int rounds = test::sanitized() ? 300 : 3000;
+  const int rounds = tailor::testing::sanitized() ? 300 : 3000;
   for (int i = 0; i < rounds; ++i) {
     FixedInt<8> a, b;
     mpz_class ma, mb;
@@ -110,27 +109,6 @@ TEST(FixedInt, ThrowsBeyondCapacity) {
   const FixedInt<4> top = FixedInt<4>(1).shifted(255);
   EXPECT_THROW((void)(top + top), CapacityExceeded);
   EXPECT_THROW((void)FixedInt<4>::scaled(1, 256, false), CapacityExceeded);
-}
-
-TEST(BigInt, SameInterfaceSameResults) {
-  std::mt19937_64 rng(5);
-  for (int i = 0; i < (test::sanitized() ? 100 : 1000); ++i) {
-    FixedInt<16> a, b;
-    mpz_class ma, mb;
-    random_pair<16>(rng, static_cast<int>(rng() % 400), a, ma);
-    random_pair<16>(rng, static_cast<int>(rng() % 400), b, mb);
-    const BigInt x = BigInt::scaled(rng() >> 11, static_cast<int>(rng() % 100), rng() & 1);
-    const mpz_class& mx = x.value();
-    EXPECT_EQ((BigInt(3) * x - x).value(), 2 * mx);
-    EXPECT_EQ(x.shifted(70).value(), mx << 70);
-    EXPECT_EQ(x.sign(), sgn(mx));
-    int e = 0;
-    const double m = x.approximate(e);
-    if (mx != 0) {
-      EXPECT_NEAR(std::ldexp(m, e) / mx.get_d(), 1.0, 1e-15);
-    }
-    expect_same(a * b, ma * mb);
-  }
 }
 
 }  // namespace

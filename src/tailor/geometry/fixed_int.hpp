@@ -1,10 +1,11 @@
 #pragma once
 /// @file
 /// Exact signed integers of at most N 64-bit limbs, on the stack (no heap, no GMP): the
-/// number type of the exact CCD tier. Sign-magnitude with a used-limb count, so small
-/// values cost little whatever N is. A result that does not fit in N limbs throws
-/// CapacityExceeded; the exact tier then reruns the query with GMP integers (BigInt),
-/// which implement the same interface. Internal to the ccd module.
+/// number type of the exact predicates (the coplanarity filter's exact signs) and of the
+/// exact CCD tier. Sign-magnitude with a used-limb count, so small values cost little
+/// whatever N is. A result that does not fit in N limbs throws CapacityExceeded; callers
+/// then fall back to GMP (the exact CCD tier reruns on BigInt, ccd/big_int.hpp, which has
+/// the same interface). Internal.
 
 #include <bit>
 #include <cmath>
@@ -14,6 +15,20 @@ namespace tailor::detail {
 
 /// Thrown by FixedInt when a result needs more limbs than it has.
 struct CapacityExceeded {};
+
+/// |v| = mantissa 2^exponent with an odd mantissa (v finite and nonzero): the exact
+/// integer view of a double. Scaling every coordinate of a query by 2^-(lowest exponent)
+/// makes them all integers (FixedInt::scaled).
+inline void decompose_double(double v, std::uint64_t& mantissa, int& exponent) {
+  const auto bits = std::bit_cast<std::uint64_t>(v);
+  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+  const std::uint64_t fraction = bits & ((std::uint64_t{1} << 52) - 1);
+  mantissa = biased == 0 ? fraction : (fraction | (std::uint64_t{1} << 52));
+  exponent = biased == 0 ? -1074 : biased - 1075;
+  const int zeros = std::countr_zero(mantissa);
+  mantissa >>= zeros;
+  exponent += zeros;
+}
 
 __extension__ using Limb2 = unsigned __int128;
 
