@@ -97,6 +97,12 @@ TEST(FixedInt, CarriesAcrossLimbs) {
   expect_same(ones, m);
   expect_same(ones + FixedInt<8>(1), m + 1);
   expect_same(ones * ones, m * m);
+  // The two-limb fast paths: a carry into a third limb, exact cancellation, 2x1 products.
+  expect_same(ones + ones, m + m);
+  expect_same(ones - ones, mpz_class(0));
+  expect_same(-ones - ones, -m - m);
+  expect_same(ones * FixedInt<8>(-3), m * -3);
+  expect_same(FixedInt<8>(std::int64_t{-1} << 62) * ones, mpz_class("-4611686018427387904") * m);
   expect_same(FixedInt<8>::scaled(0xffffffffffffffffu, 63, true),
               -(mpz_class("18446744073709551615") << 63));
 }

@@ -113,10 +113,12 @@ class FixedInt {
 
   [[gnu::always_inline]] friend FixedInt operator+(const FixedInt& a, const FixedInt& b) {
     if (a.m_size <= 1 && b.m_size <= 1) return from_small(a.small() + b.small());
+    if (a.m_size <= 2 && b.m_size <= 2) return add_two_limbs(a, b, b.m_negative);
     return add(a, b, false);
   }
   [[gnu::always_inline]] friend FixedInt operator-(const FixedInt& a, const FixedInt& b) {
     if (a.m_size <= 1 && b.m_size <= 1) return from_small(a.small() - b.small());
+    if (a.m_size <= 2 && b.m_size <= 2) return add_two_limbs(a, b, b.m_size != 0 && !b.m_negative);
     return add(a, b, true);
   }
   [[gnu::always_inline]] friend FixedInt operator*(const FixedInt& a, const FixedInt& b) {
@@ -127,6 +129,20 @@ class FixedInt {
       r.m_limb[0] = static_cast<std::uint64_t>(t);
       r.m_limb[1] = static_cast<std::uint64_t>(t >> 64);
       r.m_size = r.m_limb[1] != 0 ? 2 : 1;
+      return r;
+    }
+    if ((a.m_size == 2 && b.m_size == 1) || (a.m_size == 1 && b.m_size == 2)) {
+      // Two limbs by one: two products, at most three limbs.
+      const FixedInt& two = a.m_size == 2 ? a : b;
+      const Limb2 one = (a.m_size == 2 ? b : a).m_limb[0];
+      FixedInt r;
+      r.m_negative = a.m_negative != b.m_negative;
+      const Limb2 lo = one * two.m_limb[0];
+      const Limb2 hi = one * two.m_limb[1] + static_cast<std::uint64_t>(lo >> 64);
+      r.m_limb[0] = static_cast<std::uint64_t>(lo);
+      r.m_limb[1] = static_cast<std::uint64_t>(hi);
+      r.m_limb[2] = static_cast<std::uint64_t>(hi >> 64);
+      r.m_size = r.m_limb[2] != 0 ? 3 : 2;
       return r;
     }
     return multiply(a, b);
@@ -212,6 +228,40 @@ class FixedInt {
     const bool b_negative = b.m_negative != subtract;
     return a.m_negative == b_negative ? add_magnitudes(a, b, a.m_negative)
                                       : subtract_signed(a, b, b_negative);
+  }
+
+  /// a + b where b enters with sign `b_negative`, both of at most two limbs.
+  static FixedInt add_two_limbs(const FixedInt& a, const FixedInt& b, bool b_negative) {
+    auto magnitude = [](const FixedInt& x) {
+      Limb2 v = 0;
+      for (int i = x.m_size - 1; i >= 0; --i) v = (v << 64) | x.m_limb[i];
+      return v;
+    };
+    const Limb2 ma = magnitude(a), mb = magnitude(b);
+    FixedInt r;
+    Limb2 m = 0;
+    if (a.m_size == 0 || b.m_size == 0 || a.m_negative == b_negative) {
+      m = ma + mb;
+      r.m_negative = a.m_size != 0 ? a.m_negative : b_negative;
+      if (m < ma) {  // carry into a third limb
+        r.m_limb[0] = static_cast<std::uint64_t>(m);
+        r.m_limb[1] = static_cast<std::uint64_t>(m >> 64);
+        r.m_limb[2] = 1;
+        r.m_size = 3;
+        return r;
+      }
+    } else if (ma >= mb) {
+      m = ma - mb;
+      r.m_negative = a.m_negative;
+    } else {
+      m = mb - ma;
+      r.m_negative = b_negative;
+    }
+    r.m_limb[0] = static_cast<std::uint64_t>(m);
+    r.m_limb[1] = static_cast<std::uint64_t>(m >> 64);
+    r.m_size = r.m_limb[1] != 0 ? 2 : (r.m_limb[0] != 0 ? 1 : 0);
+    if (r.m_size == 0) r.m_negative = false;
+    return r;
   }
 
   __extension__ using Signed2 = __int128;
