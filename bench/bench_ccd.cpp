@@ -1,17 +1,39 @@
 /// @file
-/// Throughput of the exact CCD (one core) on the reference queries, with the share of
-/// queries each path decides, the coplanarity filter alone, and a naive floating-point
-/// cubic-solver baseline with its false negatives / positives against the ground truth.
+/// Throughput of the exact CCD on one core, per data set and per tier, with the naive
+/// floating-point cubic baseline on the same queries (and its false negatives / positives).
+///
+/// Data sets (first argument): 0 cloth-funnel (truth: mma_bool), 1 the erleben scenes and
+/// 2 the unit tests of ccd-queries (truth column), 3 the folded-cloth contact step of the
+/// project's generator at 100K triangles (the pairs the detector sends to the CCD; truth:
+/// the exact CCD itself, which the tests check against the oracle), 4 the generated
+/// degenerate set (100K queries, every category, scales 2^-20..2^20; truth: the rational
+/// oracle), 5 extreme exponent spreads (issue 17: coordinates from 1e-309 to 1e148; truth:
+/// the rational oracle).
+///
+/// BM_Ccd: the public pipeline; counters give the share of queries each tier decided.
+/// BM_CcdTier/set/tier: the public pipeline on the queries that `tier` decided (0 filter,
+/// 1 double, 2 exact_signs, 3 exact, 4 gmp): the cost per query of each tier's queries.
+/// BM_ExactTier: the exact tier alone on every query of the set.
+/// BM_Naive: the naive cubic solver (bench/naive_ccd.hpp), with its errors.
 
 #include <benchmark/benchmark.h>
+#include <tbb/parallel_for.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "naive_ccd.hpp"
+#include "support/degenerate_ccd_queries.hpp"
+#include "tailor/candidates/isolated_set.hpp"
+#include "tailor/candidates/primitive_pair_generator.hpp"
 #include "tailor/ccd/ccd.hpp"
-#include "tailor/geometry/coplanarity_sign.hpp"
+#include "tailor/ccd/ccd_exact.hpp"
+#include "tailor/ccd/ccd_rational.hpp"
 #include "tailor/ccd/query_io.hpp"
+#include "tailor/detection/self_collision_detector.hpp"
+#include "tailor/geometry/coplanarity_sign.hpp"
+#include "tailor/mesh/procedural_steps.hpp"
 
 namespace tailor {
 namespace {
@@ -20,6 +42,7 @@ struct QuerySet {
   std::vector<VertexFaceQuery> vf;
   std::vector<EdgeEdgeQuery> ee;
   std::vector<bool> vf_truth, ee_truth;
+  std::size_t size() const { return vf.size() + ee.size(); }
 };
 
 const std::string kData = TAILOR_DATA_DIR;
@@ -39,86 +62,271 @@ void append(QuerySet& s, const std::string& path, const std::string& truth_json 
   }
 }
 
-const QuerySet& funnel() {
-  static const QuerySet s = [] {
-    QuerySet r;
-    const std::string d = kData + "/cloth-funnel";
-    append(r, d + "/queries/227vf.csv", d + "/mma_bool/227vf_mma_bool.json");
-    append(r, d + "/queries/227ee.csv", d + "/mma_bool/227ee_mma_bool.json");
-    return r;
-  }();
-  return s;
+QuerySet funnel() {
+  QuerySet r;
+  const std::string d = kData + "/cloth-funnel";
+  append(r, d + "/queries/227vf.csv", d + "/mma_bool/227vf_mma_bool.json");
+  append(r, d + "/queries/227ee.csv", d + "/mma_bool/227ee_mma_bool.json");
+  return r;
 }
 
-const QuerySet& erleben() {
-  static const QuerySet s = [] {
-    QuerySet r;
-    for (const char* name : kErleben) {
-      const std::string d = kData + "/ccd-queries/erleben-" + name;
-      append(r, d + "/vertex-face/data_0_0.csv");
-      append(r, d + "/edge-edge/data_0_0.csv");
-    }
-    return r;
-  }();
-  return s;
+QuerySet erleben() {
+  QuerySet r;
+  for (const char* name : kErleben) {
+    const std::string d = kData + "/ccd-queries/erleben-" + name;
+    append(r, d + "/vertex-face/data_0_0.csv");
+    append(r, d + "/edge-edge/data_0_0.csv");
+  }
+  return r;
 }
 
-const QuerySet& unit_tests() {
-  static const QuerySet s = [] {
-    QuerySet r;
-    const std::string d = kData + "/ccd-queries/unit-tests";
-    for (const char* f : {"vertex-face/data_0_0.csv", "vertex-face/data_0_1.csv",
-                          "edge-edge/data_0_0.csv", "edge-edge/data_0_1.csv"}) {
-      append(r, d + "/" + f);
+QuerySet unit_tests() {
+  QuerySet r;
+  const std::string d = kData + "/ccd-queries/unit-tests";
+  for (const char* f : {"vertex-face/data_0_0.csv", "vertex-face/data_0_1.csv",
+                        "edge-edge/data_0_0.csv", "edge-edge/data_0_1.csv"}) {
+    append(r, d + "/" + f);
+  }
+  return r;
+}
+
+/// The VF and EE pairs the detector sends to the CCD in the folded-cloth step (the same
+/// pairs as `tailor detect --dump-queries`).
+QuerySet folded_cloth() {
+  const ProceduralStep step = make_folded_cloth_on_sphere(100000, 1);
+  const TriangleMesh mesh(static_cast<Index>(step.x0.rows()), step.faces);
+  DetectionConfig config = DetectionConfig::preset("paper");
+  config.keep_candidate_pairs = true;
+  SelfCollisionDetector detector(mesh, step.x0, config);
+  const DetectionResult result = detector.detect(step.x0, step.x1);
+  const IsolatedSet isolated = IsolatedSet::build(mesh);
+  PrimitivePairGenerator generator(mesh);
+  std::vector<VertexFacePair> vf_pairs;
+  std::vector<EdgeEdgePair> ee_pairs;
+  LowLevelCounts counts;
+  generator.generate(result.candidate_triangle_pairs, isolated, step.x0, step.x1,
+                     {config.feature_assignment, config.primitive_boxes, config.coplanarity_filter,
+                      config.adjacency_culling},
+                     vf_pairs, ee_pairs, counts);
+  QuerySet r;
+  const auto& x0 = step.x0;
+  const auto& x1 = step.x1;
+  for (const auto& [v, f] : vf_pairs) {
+    const Index a = mesh.faces()(f, 0), b = mesh.faces()(f, 1), c = mesh.faces()(f, 2);
+    r.vf.push_back(
+        {x0.row(v), x0.row(a), x0.row(b), x0.row(c), x1.row(v), x1.row(a), x1.row(b), x1.row(c)});
+  }
+  for (const auto& [e1, e2] : ee_pairs) {
+    const Index a = mesh.edges()(e1, 0), b = mesh.edges()(e1, 1), c = mesh.edges()(e2, 0),
+                d = mesh.edges()(e2, 1);
+    r.ee.push_back(
+        {x0.row(a), x0.row(b), x0.row(c), x0.row(d), x1.row(a), x1.row(b), x1.row(c), x1.row(d)});
+  }
+  // Truth: the exact CCD (tests compare it with the rational oracle).
+  for (const auto& q : r.vf) r.vf_truth.push_back(vertex_face_ccd(q).hit);
+  for (const auto& q : r.ee) r.ee_truth.push_back(edge_edge_ccd(q).hit);
+  return r;
+}
+
+/// Truth of generated queries from the rational oracle (parallel: it is slow).
+void oracle_truth(QuerySet& r) {
+  r.vf_truth.assign(r.vf.size(), false);
+  r.ee_truth.assign(r.ee.size(), false);
+  std::vector<char> vf(r.vf.size()), ee(r.ee.size());
+  tbb::parallel_for(std::size_t{0}, r.vf.size(),
+                    [&](std::size_t i) { vf[i] = detail::vertex_face_ccd_rational(r.vf[i]).hit; });
+  tbb::parallel_for(std::size_t{0}, r.ee.size(),
+                    [&](std::size_t i) { ee[i] = detail::edge_edge_ccd_rational(r.ee[i]).hit; });
+  for (std::size_t i = 0; i < vf.size(); ++i) r.vf_truth[i] = vf[i];
+  for (std::size_t i = 0; i < ee.size(); ++i) r.ee_truth[i] = ee[i];
+}
+
+QuerySet degenerate() {
+  QuerySet r;
+  testing::DegenerateQueryGenerator gen(2026);
+  for (int i = 0; i < 100000; ++i) {
+    const testing::DegenerateQuery q = gen.next();
+    if (q.vertex_face) {
+      r.vf.push_back(q.vf);
+    } else {
+      r.ee.push_back(q.ee);
     }
-    return r;
-  }();
-  return s;
+  }
+  oracle_truth(r);
+  return r;
+}
+
+/// Issue 17: one coordinate a subnormal, others up to 1e148, in the degenerate
+/// configurations of CcdDegenerate.ExtremeExponentSpread, crossed with small shifts.
+QuerySet extreme_spread() {
+  QuerySet r;
+  const double huge = 1e148, tiny = 1e-309;
+  for (int i = 0; i < 64; ++i) {
+    const double a_x = (i & 1) ? tiny : 0.0, c_x = (i & 2) ? -tiny : tiny;
+    const double y = 1.0 + (i >> 2);
+    r.ee.push_back({{a_x, 0, 0},
+                    {huge, 0, 0},
+                    {c_x, y, 1},
+                    {c_x, y, 2},
+                    {a_x, 0, 0},
+                    {huge, 0, 0},
+                    {c_x, -y, -1},
+                    {c_x, -y, 0}});
+    r.vf.push_back({{c_x, tiny, y},
+                    {a_x, 0, 0},
+                    {huge, 0, 0},
+                    {0, huge, 0},
+                    {c_x, tiny, -y},
+                    {a_x, 0, 0},
+                    {huge, 0, 0},
+                    {0, huge, 0}});
+  }
+  oracle_truth(r);
+  return r;
 }
 
 const QuerySet& set(int i) {
-  return i == 0 ? funnel() : (i == 1 ? erleben() : unit_tests());
-}
-const char* set_name(int i) {
-  return i == 0 ? "funnel" : (i == 1 ? "erleben" : "unit-tests");
+  static QuerySet sets[6];
+  static bool loaded[6] = {};
+  if (!loaded[i]) {
+    switch (i) {
+      case 0:
+        sets[i] = funnel();
+        break;
+      case 1:
+        sets[i] = erleben();
+        break;
+      case 2:
+        sets[i] = unit_tests();
+        break;
+      case 3:
+        sets[i] = folded_cloth();
+        break;
+      case 4:
+        sets[i] = degenerate();
+        break;
+      default:
+        sets[i] = extreme_spread();
+    }
+    loaded[i] = true;
+  }
+  return sets[i];
 }
 
-template <class Q, class Fn>
-void run_exact(benchmark::State& state, const std::vector<Q>& qs, Fn&& fn) {
-  std::size_t paths[3] = {0, 0, 0};
-  std::size_t n = 0;
+const char* set_name(int i) {
+  static const char* names[6] = {"funnel",       "erleben",    "unit-tests",
+                                 "folded-cloth", "degenerate", "extreme-spread"};
+  return names[i];
+}
+
+/// Runs `fn` over the set's queries (VF then EE, or the subset `vf_only` / `ee_only`)
+/// and reports per-path shares and errors against the truth.
+template <class VfFn, class EeFn>
+void run_set(benchmark::State& state, const QuerySet& s, const std::vector<std::size_t>& vf_idx,
+             const std::vector<std::size_t>& ee_idx, VfFn&& vf_fn, EeFn&& ee_fn) {
+  std::size_t paths[kCcdPathCount] = {};
+  std::size_t fn = 0, fp = 0, n = 0;
   for (auto _ : state) {
-    for (const Q& q : qs) {
-      const CcdResult r = fn(q);
+    std::fill(std::begin(paths), std::end(paths), 0);
+    fn = fp = 0;
+    for (std::size_t i : vf_idx) {
+      const CcdResult r = vf_fn(s.vf[i]);
       benchmark::DoNotOptimize(r);
       ++paths[static_cast<int>(r.path)];
+      fn += s.vf_truth[i] && !r.hit;
+      fp += !s.vf_truth[i] && r.hit;
     }
-    n += qs.size();
+    for (std::size_t i : ee_idx) {
+      const CcdResult r = ee_fn(s.ee[i]);
+      benchmark::DoNotOptimize(r);
+      ++paths[static_cast<int>(r.path)];
+      fn += s.ee_truth[i] && !r.hit;
+      fp += !s.ee_truth[i] && r.hit;
+    }
+    n += vf_idx.size() + ee_idx.size();
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(n));
-  const double total = static_cast<double>(n);
-  state.counters["filter_rate"] = static_cast<double>(paths[0]) / total;
-  state.counters["double_rate"] = static_cast<double>(paths[1]) / total;
-  state.counters["exact_fallback_rate"] = static_cast<double>(paths[2]) / total;
+  const double total = static_cast<double>(vf_idx.size() + ee_idx.size());
+  state.counters["queries"] = total;
+  for (int i = 0; i < kCcdPathCount; ++i) {
+    state.counters[std::string(ccd_path_name(static_cast<CcdPath>(i))) + "_rate"] =
+        total > 0 ? static_cast<double>(paths[i]) / total : 0.0;
+  }
+  state.counters["gmp_queries"] = static_cast<double>(paths[static_cast<int>(CcdPath::gmp)]);
+  state.counters["false_negatives"] = static_cast<double>(fn);
+  state.counters["false_positives"] = static_cast<double>(fp);
+  state.counters["ns_per_query"] = benchmark::Counter(
+      static_cast<double>(n), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
-void BM_VertexFaceCcd(benchmark::State& state) {
-  const QuerySet& s = set(static_cast<int>(state.range(0)));
-  state.SetLabel(set_name(static_cast<int>(state.range(0))));
-  run_exact(state, s.vf, [](const VertexFaceQuery& q) { return vertex_face_ccd(q); });
+std::vector<std::size_t> all(std::size_t n) {
+  std::vector<std::size_t> v(n);
+  for (std::size_t i = 0; i < n; ++i) v[i] = i;
+  return v;
 }
 
-void BM_EdgeEdgeCcd(benchmark::State& state) {
-  const QuerySet& s = set(static_cast<int>(state.range(0)));
-  state.SetLabel(set_name(static_cast<int>(state.range(0))));
-  run_exact(state, s.ee, [](const EdgeEdgeQuery& q) { return edge_edge_ccd(q); });
+void BM_Ccd(benchmark::State& state) {
+  const int k = static_cast<int>(state.range(0));
+  const QuerySet& s = set(k);
+  state.SetLabel(set_name(k));
+  run_set(
+      state, s, all(s.vf.size()), all(s.ee.size()),
+      [](const VertexFaceQuery& q) { return vertex_face_ccd(q); },
+      [](const EdgeEdgeQuery& q) { return edge_edge_ccd(q); });
+}
+
+void BM_CcdTier(benchmark::State& state) {
+  const int k = static_cast<int>(state.range(0));
+  const auto tier = static_cast<CcdPath>(state.range(1));
+  const QuerySet& s = set(k);
+  state.SetLabel(std::string(set_name(k)) + "/" + ccd_path_name(tier));
+  std::vector<std::size_t> vf, ee;
+  for (std::size_t i = 0; i < s.vf.size(); ++i) {
+    if (vertex_face_ccd(s.vf[i]).path == tier) vf.push_back(i);
+  }
+  for (std::size_t i = 0; i < s.ee.size(); ++i) {
+    if (edge_edge_ccd(s.ee[i]).path == tier) ee.push_back(i);
+  }
+  if (vf.empty() && ee.empty()) {
+    state.SkipWithError("no query of this set is decided by this tier");
+    return;
+  }
+  run_set(
+      state, s, vf, ee, [](const VertexFaceQuery& q) { return vertex_face_ccd(q); },
+      [](const EdgeEdgeQuery& q) { return edge_edge_ccd(q); });
+}
+
+void BM_ExactTier(benchmark::State& state) {
+  const int k = static_cast<int>(state.range(0));
+  const QuerySet& s = set(k);
+  state.SetLabel(set_name(k));
+  run_set(
+      state, s, all(s.vf.size()), all(s.ee.size()),
+      [](const VertexFaceQuery& q) { return detail::vertex_face_ccd_exact(q); },
+      [](const EdgeEdgeQuery& q) { return detail::edge_edge_ccd_exact(q); });
+}
+
+void BM_Naive(benchmark::State& state) {
+  const int k = static_cast<int>(state.range(0));
+  const QuerySet& s = set(k);
+  state.SetLabel(set_name(k));
+  run_set(
+      state, s, all(s.vf.size()), all(s.ee.size()),
+      [](const VertexFaceQuery& q) {
+        return CcdResult{bench::naive_vertex_face(q), 1.0, CcdPath::double_precision};
+      },
+      [](const EdgeEdgeQuery& q) {
+        return CcdResult{bench::naive_edge_edge(q), 1.0, CcdPath::double_precision};
+      });
 }
 
 void BM_CoplanaritySign(benchmark::State& state) {
-  const QuerySet& s = set(static_cast<int>(state.range(0)));
-  state.SetLabel(set_name(static_cast<int>(state.range(0))));
+  const int k = static_cast<int>(state.range(0));
+  const QuerySet& s = set(k);
+  state.SetLabel(set_name(k));
   std::size_t n = 0, culled = 0;
   for (auto _ : state) {
+    culled = 0;
     for (const auto& q : s.vf) {
       const StepSign r =
           coplanarity_sign(q.a_t0, q.b_t0, q.c_t0, q.p_t0, q.a_t1, q.b_t1, q.c_t1, q.p_t1);
@@ -131,52 +339,23 @@ void BM_CoplanaritySign(benchmark::State& state) {
       benchmark::DoNotOptimize(r);
       culled += r != StepSign::mixed;
     }
-    n += s.vf.size() + s.ee.size();
+    n += s.size();
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(n));
-  state.counters["culled_rate"] = static_cast<double>(culled) / static_cast<double>(n);
+  state.counters["culled_rate"] = static_cast<double>(culled) / static_cast<double>(s.size());
 }
 
-template <class Q, class Fn>
-void run_naive(benchmark::State& state, const std::vector<Q>& qs, const std::vector<bool>& truth,
-               Fn&& fn) {
-  std::size_t n = 0, fn_count = 0, fp_count = 0;
-  for (auto _ : state) {
-    fn_count = fp_count = 0;
-    for (std::size_t i = 0; i < qs.size(); ++i) {
-      const bool hit = fn(qs[i]);
-      benchmark::DoNotOptimize(hit);
-      fn_count += truth[i] && !hit;
-      fp_count += !truth[i] && hit;
-    }
-    n += qs.size();
+void tiers(benchmark::internal::Benchmark* b) {
+  for (int k = 0; k <= 5; ++k) {
+    for (int tier = 0; tier < kCcdPathCount; ++tier) b->Args({k, tier});
   }
-  state.SetItemsProcessed(static_cast<std::int64_t>(n));
-  state.counters["false_negatives"] = static_cast<double>(fn_count);
-  state.counters["false_positives"] = static_cast<double>(fp_count);
-  state.counters["queries"] = static_cast<double>(qs.size());
 }
 
-void BM_NaiveVertexFace(benchmark::State& state) {
-  const QuerySet& s = set(static_cast<int>(state.range(0)));
-  state.SetLabel(set_name(static_cast<int>(state.range(0))));
-  run_naive(state, s.vf, s.vf_truth,
-            [](const VertexFaceQuery& q) { return bench::naive_vertex_face(q); });
-}
-
-void BM_NaiveEdgeEdge(benchmark::State& state) {
-  const QuerySet& s = set(static_cast<int>(state.range(0)));
-  state.SetLabel(set_name(static_cast<int>(state.range(0))));
-  run_naive(state, s.ee, s.ee_truth,
-            [](const EdgeEdgeQuery& q) { return bench::naive_edge_edge(q); });
-}
-
-// Argument: 0 = cloth-funnel, 1 = erleben scenes, 2 = unit-tests.
-BENCHMARK(BM_VertexFaceCcd)->DenseRange(0, 2);
-BENCHMARK(BM_EdgeEdgeCcd)->DenseRange(0, 2);
-BENCHMARK(BM_CoplanaritySign)->DenseRange(0, 2);
-BENCHMARK(BM_NaiveVertexFace)->DenseRange(0, 2);
-BENCHMARK(BM_NaiveEdgeEdge)->DenseRange(0, 2);
+BENCHMARK(BM_Ccd)->DenseRange(0, 5)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CcdTier)->Apply(tiers)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ExactTier)->DenseRange(0, 5)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Naive)->DenseRange(0, 5)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CoplanaritySign)->DenseRange(0, 5)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace tailor

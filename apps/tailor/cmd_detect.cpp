@@ -8,6 +8,9 @@
 
 #include "command.hpp"
 #include "detection_options.hpp"
+#include "tailor/candidates/isolated_set.hpp"
+#include "tailor/candidates/primitive_pair_generator.hpp"
+#include "tailor/ccd/query_writer.hpp"
 #include "tailor/detection/brute_force.hpp"
 #include "tailor/detection/self_collision_detector.hpp"
 #include "tailor/geometry/error.hpp"
@@ -18,7 +21,7 @@ namespace tailor::cli {
 namespace {
 
 struct DetectArgs {
-  std::string mesh_t0, mesh_t1, json_path, observers_path;
+  std::string mesh_t0, mesh_t1, json_path, observers_path, dump_prefix;
   bool brute_force = false;
   DetectionOptions detection;
 };
@@ -54,6 +57,43 @@ void print_stats(const DetectionStats& s) {
       s.refit_ms, s.traversal_ms, s.pair_generation_ms, s.ccd_ms, s.total_ms);
 }
 
+// The VF and EE pairs the detector sent to the exact CCD, regenerated from its candidate
+// triangle pairs with the same low-level options, written as query CSVs
+// (`PREFIXvf.csv`, `PREFIXee.csv`) for benchmarks and ccd-check.
+void dump_queries(const std::string& prefix, const TriangleMesh& mesh, const Positions& x0,
+                  const Positions& x1, const DetectionConfig& config,
+                  const std::vector<TrianglePair>& ctps) {
+  const IsolatedSet isolated = config.adjacency_culling ? IsolatedSet::build(mesh) : IsolatedSet{};
+  PrimitivePairGenerator generator(mesh);
+  std::vector<VertexFacePair> vf_pairs;
+  std::vector<EdgeEdgePair> ee_pairs;
+  LowLevelCounts counts;
+  generator.generate(ctps, isolated, x0, x1,
+                     {config.feature_assignment, config.primitive_boxes, config.coplanarity_filter,
+                      config.adjacency_culling},
+                     vf_pairs, ee_pairs, counts);
+  const FaceArray& faces = mesh.faces();
+  const EdgeArray& edges = mesh.edges();
+  std::vector<VertexFaceQuery> vf;
+  vf.reserve(vf_pairs.size());
+  for (const auto& [v, f] : vf_pairs) {
+    const Index a = faces(f, 0), b = faces(f, 1), c = faces(f, 2);
+    vf.push_back(
+        {x0.row(v), x0.row(a), x0.row(b), x0.row(c), x1.row(v), x1.row(a), x1.row(b), x1.row(c)});
+  }
+  std::vector<EdgeEdgeQuery> ee;
+  ee.reserve(ee_pairs.size());
+  for (const auto& [e1, e2] : ee_pairs) {
+    const Index a = edges(e1, 0), b = edges(e1, 1), c = edges(e2, 0), d = edges(e2, 1);
+    ee.push_back(
+        {x0.row(a), x0.row(b), x0.row(c), x0.row(d), x1.row(a), x1.row(b), x1.row(c), x1.row(d)});
+  }
+  write_ccd_queries(prefix + "vf.csv", vf);
+  write_ccd_queries(prefix + "ee.csv", ee);
+  fmt::print("dumped     : {} VF queries to {}vf.csv, {} EE queries to {}ee.csv\n", vf.size(),
+             prefix, ee.size(), prefix);
+}
+
 int run_detect(const DetectArgs& args) {
   const MeshData t0 = read_mesh(args.mesh_t0);
   const MeshData t1 = read_mesh(args.mesh_t1);
@@ -74,7 +114,8 @@ int run_detect(const DetectArgs& args) {
     collisions = brute_force_self_collisions(mesh, t0.vertices, t1.vertices);
     fmt::print("method     : brute force\n");
   } else {
-    const DetectionConfig config = args.detection.config();
+    DetectionConfig config = args.detection.config();
+    if (!args.dump_prefix.empty()) config.keep_candidate_pairs = true;
     std::vector<std::vector<Index>> loops;
     if (!args.observers_path.empty()) {
       loops = read_observer_loops(args.observers_path, mesh.num_vertices());
@@ -83,6 +124,10 @@ int run_detect(const DetectArgs& args) {
     DetectionResult result = detector.detect(t0.vertices, t1.vertices);
     fmt::print("method     : {}\n", args.detection.method);
     print_stats(result.stats);
+    if (!args.dump_prefix.empty()) {
+      dump_queries(args.dump_prefix, mesh, t0.vertices, t1.vertices, config,
+                   result.candidate_triangle_pairs);
+    }
     out["stats"] = result.stats;
     collisions = std::move(result.collisions);
   }
@@ -108,12 +153,18 @@ const CommandRegistration registration{
       command->add_option("MESH_T1", args->mesh_t1, "Mesh at the end of the step (same topology)")
           ->required()
           ->check(CLI::ExistingFile);
-      command->add_flag("--brute-force", args->brute_force, "Test every feature pair (the oracle)");
+      CLI::Option* brute = command->add_flag("--brute-force", args->brute_force,
+                                             "Test every feature pair (the oracle)");
       command->add_option("--json", args->json_path, "Write collisions and statistics as JSON");
       command
           ->add_option("--observers", args->observers_path,
                        "Radial-view section loops: JSON {\"loops\": [[vertex ids], ...]}")
           ->check(CLI::ExistingFile);
+      command
+          ->add_option("--dump-queries", args->dump_prefix,
+                       "Write the pairs sent to the exact CCD as query CSVs PREFIXvf.csv "
+                       "and PREFIXee.csv (for ccd-check and benchmarks)")
+          ->excludes(brute);
       args->detection.add_to(*command);
       return [args] { return run_detect(*args); };
     }};

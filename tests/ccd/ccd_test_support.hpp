@@ -10,10 +10,13 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "tailor/ccd/ccd.hpp"
+#include "tailor/ccd/ccd_exact.hpp"
+#include "tailor/ccd/ccd_rational.hpp"
 
 namespace tailor::test {
 
@@ -145,6 +148,75 @@ inline bool vf_contact_at(const VertexFaceQuery& q, const mpq_class& t) {
 inline bool ee_contact_at(const EdgeEdgeQuery& q, const mpq_class& t) {
   return segments_intersect(at(q.ea0_t0, q.ea0_t1, t), at(q.ea1_t0, q.ea1_t1, t),
                             at(q.eb0_t0, q.eb0_t1, t), at(q.eb1_t0, q.eb1_t1, t));
+}
+
+// ---- tiers against the rational oracle ------------------------------------------------
+
+inline CcdResult oracle(const VertexFaceQuery& q) {
+  return detail::vertex_face_ccd_rational(q);
+}
+inline CcdResult oracle(const EdgeEdgeQuery& q) {
+  return detail::edge_edge_ccd_rational(q);
+}
+inline CcdResult exact_tier(const VertexFaceQuery& q) {
+  return detail::vertex_face_ccd_exact(q);
+}
+inline CcdResult exact_tier(const EdgeEdgeQuery& q) {
+  return detail::edge_edge_ccd_exact(q);
+}
+inline CcdResult exact_tier_gmp(const VertexFaceQuery& q) {
+  return detail::vertex_face_ccd_exact_gmp(q);
+}
+inline CcdResult exact_tier_gmp(const EdgeEdgeQuery& q) {
+  return detail::edge_edge_ccd_exact_gmp(q);
+}
+inline std::optional<CcdResult> double_tier(const VertexFaceQuery& q) {
+  return detail::vertex_face_ccd_double(q);
+}
+inline std::optional<CcdResult> double_tier(const EdgeEdgeQuery& q) {
+  return detail::edge_edge_ccd_double(q);
+}
+inline CcdResult public_ccd(const VertexFaceQuery& q) {
+  return vertex_face_ccd(q);
+}
+inline CcdResult public_ccd(const EdgeEdgeQuery& q) {
+  return edge_edge_ccd(q);
+}
+
+/// Same answer as the oracle: the same `hit`, and for a hit a time of impact that is a
+/// valid bound too (the oracle's lies within 2^-21 below the earliest contact, every tier's
+/// within 1e-6 below it, so they differ by less than that).
+inline bool agrees(const CcdResult& x, const CcdResult& oracle) {
+  if (x.hit != oracle.hit) return false;
+  if (!x.hit) return x.toi == 1.0;
+  return x.toi >= 0.0 && x.toi <= 1.0 && x.toi <= oracle.toi + 0x1p-21 &&
+         x.toi >= oracle.toi - 1e-6;
+}
+
+/// The query's 8 points in the filter's order: triangle (or first edge) and then the
+/// vertex (or second edge), at t0 and then at t1.
+inline std::array<Vec3, 8> filter_points(const VertexFaceQuery& q) {
+  return {q.a_t0, q.b_t0, q.c_t0, q.p_t0, q.a_t1, q.b_t1, q.c_t1, q.p_t1};
+}
+inline std::array<Vec3, 8> filter_points(const EdgeEdgeQuery& q) {
+  return {q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1};
+}
+
+/// Exactly: do the four Bernstein coefficients of the coplanarity cubic share one strict
+/// sign (so the four points are never coplanar and no contact is possible)?
+inline bool never_coplanar_exact(const std::array<Vec3, 8>& x) {
+  auto q3 = [](const Vec3& v) { return Q3{mpq_class(v[0]), mpq_class(v[1]), mpq_class(v[2])}; };
+  const Q3 u0 = sub(q3(x[1]), q3(x[0])), v0 = sub(q3(x[2]), q3(x[0])), w0 = sub(q3(x[3]), q3(x[0]));
+  const Q3 u1 = sub(q3(x[5]), q3(x[4])), v1 = sub(q3(x[6]), q3(x[4])), w1 = sub(q3(x[7]), q3(x[4]));
+  auto det = [](const Q3& a, const Q3& b, const Q3& c) { return dt(a, crs(b, c)); };
+  const mpq_class b[4] = {det(u0, v0, w0), det(u1, v0, w0) + det(u0, v1, w0) + det(u0, v0, w1),
+                          det(u0, v1, w1) + det(u1, v0, w1) + det(u1, v1, w0), det(u1, v1, w1)};
+  bool positive = true, negative = true;
+  for (const auto& c : b) {
+    positive &= c > 0;
+    negative &= c < 0;
+  }
+  return positive || negative;
 }
 
 }  // namespace tailor::test

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 #include "ccd_test_support.hpp"
 #include "tailor/ccd/ccd.hpp"
@@ -22,46 +23,43 @@ double down(double x) {
   return std::nextafter(x, -2.0 * std::fabs(x) - 1.0);
 }
 
-/// Checks the public function, the exact path, the double path (when it answers) and the
-/// scaled queries; `toi` is the true earliest contact when `hit`.
-void expect_vf(const VertexFaceQuery& q, bool hit, double toi = 0.0) {
-  for (int e : {0, 20, -20, 500, -500}) {
-    const VertexFaceQuery s = e ? test::scaled(q, e) : q;
+/// Checks every tier (public pipeline, certified double tier when it answers, fixed-size
+/// exact tier, its GMP instantiation) and the rational oracle on the query and on its
+/// scalings by 2^±20, 2^±500 and 2^±1000 (when exact); `toi` is the true earliest contact
+/// when `hit`.
+template <class Q>
+void expect_query(const Q& q, bool hit, double toi) {
+  for (int e : {0, 20, -20, 500, -500, 1000, -1000}) {
+    const Q s = e ? test::scaled(q, e) : q;
     if (!test::same(test::scaled(s, -e), q)) continue;  // scaling not exact (subnormals)
-    const CcdResult r = vertex_face_ccd(s);
-    const CcdResult x = detail::vertex_face_ccd_exact(s);
-    EXPECT_EQ(r.hit, hit) << "scale 2^" << e;
-    EXPECT_EQ(x.hit, hit) << "exact, scale 2^" << e;
-    if (const auto d = detail::vertex_face_ccd_double(s)) {
-      EXPECT_EQ(d->hit, hit) << "double";
+    const CcdResult answers[4] = {test::public_ccd(s), test::exact_tier(s), test::exact_tier_gmp(s),
+                                  test::oracle(s)};
+    const char* names[4] = {"public", "exact", "exact gmp", "oracle"};
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_EQ(answers[i].hit, hit) << names[i] << ", scale 2^" << e;
+      if (hit) {
+        EXPECT_LE(answers[i].toi, toi) << names[i] << ", scale 2^" << e;
+        EXPECT_GE(answers[i].toi, toi - 1e-6) << names[i] << ", scale 2^" << e;
+      } else {
+        EXPECT_EQ(answers[i].toi, 1.0) << names[i];
+      }
     }
-    if (hit) {
-      EXPECT_LE(r.toi, toi);
-      EXPECT_GE(r.toi, toi - 1e-6);
-      EXPECT_LE(x.toi, toi);
-      EXPECT_GE(x.toi, toi - 1e-6);
+    if (const auto d = test::double_tier(s)) {
+      EXPECT_EQ(d->hit, hit) << "double, scale 2^" << e;
+      if (hit) {
+        EXPECT_LE(d->toi, toi);
+        EXPECT_GE(d->toi, toi - 1e-6);
+      }
     }
   }
 }
 
+void expect_vf(const VertexFaceQuery& q, bool hit, double toi = 0.0) {
+  expect_query(q, hit, toi);
+}
+
 void expect_ee(const EdgeEdgeQuery& q, bool hit, double toi = 0.0) {
-  for (int e : {0, 20, -20, 500, -500}) {
-    const EdgeEdgeQuery s = e ? test::scaled(q, e) : q;
-    if (!test::same(test::scaled(s, -e), q)) continue;  // scaling not exact (subnormals)
-    const CcdResult r = edge_edge_ccd(s);
-    const CcdResult x = detail::edge_edge_ccd_exact(s);
-    EXPECT_EQ(r.hit, hit) << "scale 2^" << e;
-    EXPECT_EQ(x.hit, hit) << "exact, scale 2^" << e;
-    if (const auto d = detail::edge_edge_ccd_double(s)) {
-      EXPECT_EQ(d->hit, hit) << "double";
-    }
-    if (hit) {
-      EXPECT_LE(r.toi, toi);
-      EXPECT_GE(r.toi, toi - 1e-6);
-      EXPECT_LE(x.toi, toi);
-      EXPECT_GE(x.toi, toi - 1e-6);
-    }
-  }
+  expect_query(q, hit, toi);
 }
 
 /// A fixed unit right triangle in z = 0 and a moving point.
@@ -229,6 +227,68 @@ TEST(CcdDegenerate, EeGenericCrossing) {
   const Vec3 a(-1, 0, 0), b(1, 0, 0);
   expect_ee(ee(a, b, {0.25, -1, 1}, {0.25, 1, 1}, a, b, {0.25, -1, -3}, {0.25, 1, -3}), true, 0.25);
   expect_ee(ee(a, b, {0.25, -1, 1}, {0.25, 1, 1}, a, b, {0.25, -1, 0.5}, {0.25, 1, 0.5}), false);
+}
+
+TEST(CcdDegenerate, VfCoplanarRotatingPlane) {
+  // An affine motion keeps the four points coplanar while their plane turns from z = 0 to
+  // x = 0: (X, Y, 0) -> (0, Y, X). Contact status never changes.
+  auto turn = [](double x, double y) { return Vec3(0.0, y, x); };
+  auto query = [&](double px, double py) {
+    return VertexFaceQuery{{px, py, 0},  {0, 0, 0},  {1, 0, 0},  {0, 1, 0},
+                           turn(px, py), turn(0, 0), turn(1, 0), turn(0, 1)};
+  };
+  expect_vf(query(0.25, 0.25), true, 0.0);  // inside throughout
+  expect_vf(query(0.5, 0.5), true, 0.0);    // on the hypotenuse throughout
+  expect_vf(query(0.5, up(0.5)), false);    // one ulp outside it
+  expect_vf(query(-kTiny, 0.25), false);    // a subnormal outside edge ca
+  expect_vf(query(0.0, 0.0), true, 0.0);    // at a vertex
+}
+
+TEST(CcdDegenerate, EeCoplanarRotatingPlane) {
+  auto turn = [](double x, double y) { return Vec3(0.0, y, x); };
+  auto query = [&](double cx, double cy, double dx, double dy) {
+    return EdgeEdgeQuery{{0, 0, 0},  {1, 0, 0},  {cx, cy, 0},  {dx, dy, 0},
+                         turn(0, 0), turn(1, 0), turn(cx, cy), turn(dx, dy)};
+  };
+  expect_ee(query(0.5, -1, 0.5, 1), true, 0.0);   // crossing throughout
+  expect_ee(query(0.5, 0, 0.5, 1), true, 0.0);    // endpoint on the edge
+  expect_ee(query(0.5, up(0.0), 0.5, 1), false);  // a subnormal above it
+  expect_ee(query(1, 0, 2, 0), true, 0.0);        // collinear, touching at b
+  expect_ee(query(up(1.0), 0, 2, 0), false);      // collinear, one ulp apart
+}
+
+TEST(CcdDegenerate, ExtremeExponentSpread) {
+  // Issue 17: coordinates from a subnormal (1e-309) to 1e148 in one query. The exact
+  // integers then need ~1600 bits per coordinate: the exact tier's GMP last resort decides,
+  // and must agree with the rational oracle. c crosses the x axis at t = 1/2 at x = 1e-309,
+  // inside segment [0, 1e148] (a hit), or at -1e-309 (a miss by a subnormal), or the
+  // segment starts at +1e-309 while c crosses at 0 (a miss).
+  const double huge = 1e148, tiny = 1e-309;
+  auto query = [&](double a_x, double c_x) {
+    return EdgeEdgeQuery{{a_x, 0, 0}, {huge, 0, 0}, {c_x, 1, 1},   {c_x, 1, 2},
+                         {a_x, 0, 0}, {huge, 0, 0}, {c_x, -1, -1}, {c_x, -1, 0}};
+  };
+  for (const auto& [a_x, c_x, hit] : {std::tuple{0.0, tiny, true}, std::tuple{0.0, -tiny, false},
+                                      std::tuple{tiny, 0.0, false}, std::tuple{tiny, tiny, true}}) {
+    const EdgeEdgeQuery q = query(a_x, c_x);
+    const CcdResult r = edge_edge_ccd(q);
+    EXPECT_EQ(r.hit, hit) << a_x << " " << c_x;
+    EXPECT_EQ(test::oracle(q).hit, hit);
+    EXPECT_TRUE(r.path == CcdPath::exact || r.path == CcdPath::gmp) << ccd_path_name(r.path);
+    if (hit) {
+      EXPECT_LE(r.toi, 0.5);
+      EXPECT_GE(r.toi, 0.5 - 1e-6);
+    }
+  }
+  // The same with a vertex and a triangle spanning 1e148.
+  const VertexFaceQuery vf{{tiny, tiny, 1},  {0, 0, 0}, {huge, 0, 0}, {0, huge, 0},
+                           {tiny, tiny, -1}, {0, 0, 0}, {huge, 0, 0}, {0, huge, 0}};
+  EXPECT_TRUE(vertex_face_ccd(vf).hit);
+  EXPECT_TRUE(test::oracle(vf).hit);
+  const VertexFaceQuery vf_out{{-tiny, tiny, 1},  {0, 0, 0}, {huge, 0, 0}, {0, huge, 0},
+                               {-tiny, tiny, -1}, {0, 0, 0}, {huge, 0, 0}, {0, huge, 0}};
+  EXPECT_FALSE(vertex_face_ccd(vf_out).hit);
+  EXPECT_FALSE(test::oracle(vf_out).hit);
 }
 
 TEST(CcdDegenerate, NonFiniteInputThrows) {

@@ -9,7 +9,6 @@
 
 #include "ccd_test_support.hpp"
 #include "tailor/ccd/ccd.hpp"
-#include "tailor/ccd/ccd_exact.hpp"
 #include "tailor/ccd/query_io.hpp"
 
 namespace tailor {
@@ -81,34 +80,47 @@ TEST(CcdReferenceData, NoFalseNegativesNoFalsePositives) {
   EXPECT_EQ(hits, 329u + 27u + 107u);
 }
 
-TEST(CcdReferenceData, ExactPathAgreesWithTruthAndDoublePath) {
+TEST(CcdReferenceData, EveryTierAndTheOracleAgreeWithTruth) {
+  std::size_t paths[kCcdPathCount] = {};
   for (const auto& r : reference()) {
     for (std::size_t i = 0; i < r.file.size(); ++i) {
       const bool vf = r.file.kind == CcdQueryKind::vertex_face;
-      const CcdResult exact = vf ? detail::vertex_face_ccd_exact(r.file.vertex_face[i])
-                                 : detail::edge_edge_ccd_exact(r.file.edge_edge[i]);
-      EXPECT_EQ(exact.hit, r.truth[i]) << r.file.path << " query " << i;
-      EXPECT_EQ(exact.path, CcdPath::exact);
-      const auto dbl = vf ? detail::vertex_face_ccd_double(r.file.vertex_face[i])
-                          : detail::edge_edge_ccd_double(r.file.edge_edge[i]);
+      const CcdResult oracle =
+          vf ? test::oracle(r.file.vertex_face[i]) : test::oracle(r.file.edge_edge[i]);
+      EXPECT_EQ(oracle.hit, r.truth[i]) << r.file.path << " query " << i;
+      const CcdResult exact =
+          vf ? test::exact_tier(r.file.vertex_face[i]) : test::exact_tier(r.file.edge_edge[i]);
+      const CcdResult gmp = vf ? test::exact_tier_gmp(r.file.vertex_face[i])
+                               : test::exact_tier_gmp(r.file.edge_edge[i]);
+      EXPECT_TRUE(exact.path == CcdPath::exact || exact.path == CcdPath::gmp);
+      ++paths[static_cast<int>(exact.path)];
+      EXPECT_TRUE(test::agrees(exact, oracle)) << r.file.path << " query " << i;
+      EXPECT_TRUE(test::agrees(gmp, oracle)) << r.file.path << " query " << i;
+      const auto dbl =
+          vf ? test::double_tier(r.file.vertex_face[i]) : test::double_tier(r.file.edge_edge[i]);
       if (dbl) {
-        EXPECT_EQ(dbl->hit, exact.hit) << r.file.path << " query " << i;
-        if (exact.hit) {
-          // exact.toi is within 2^-21 below the earliest contact; the double toi is never
-          // later than it and within 2^-20 of it.
-          EXPECT_LE(dbl->toi, exact.toi + 0x1p-21) << r.file.path << " query " << i;
-          EXPECT_GE(dbl->toi, exact.toi - 1e-6) << r.file.path << " query " << i;
-        }
+        EXPECT_TRUE(test::agrees(*dbl, oracle)) << r.file.path << " query " << i;
       }
     }
   }
+  // The fixed-size integers hold all but the widest queries (coordinates ~1e-18 beside
+  // ~1: 110-bit spreads, whose pseudo-remainders outgrow 2048 bits).
+  EXPECT_GT(paths[static_cast<int>(CcdPath::exact)], 50 * paths[static_cast<int>(CcdPath::gmp)]);
 }
 
 TEST(CcdReferenceData, ScaleInvariance) {
   for (const auto& r : reference()) {
     for (std::size_t i = 0; i < r.file.size(); ++i) {
       const CcdResult base = run(r.file, i);
-      for (int e : {20, -20}) {
+      // 2^±20 keeps the double tier in range; 2^±600 leaves it to the exact tier.
+      for (int e : {20, -20, 600, -600}) {
+        const bool exact_scaling =
+            r.file.kind == CcdQueryKind::vertex_face
+                ? test::same(test::scaled(test::scaled(r.file.vertex_face[i], e), -e),
+                             r.file.vertex_face[i])
+                : test::same(test::scaled(test::scaled(r.file.edge_edge[i], e), -e),
+                             r.file.edge_edge[i]);
+        ASSERT_TRUE(exact_scaling) << r.file.path << " query " << i << " scale 2^" << e;
         const CcdResult s = run(r.file, i, e);
         EXPECT_EQ(s.hit, base.hit) << r.file.path << " query " << i << " scale 2^" << e;
         EXPECT_NEAR(s.toi, base.toi, 2e-6) << r.file.path << " query " << i;

@@ -112,5 +112,26 @@ TEST(CoplanarityFilter, HandMadeCases) {
             StepSign::positive);
 }
 
+TEST(CoplanarityFilter, ExactSignsFromStackIntegersAndGmp) {
+  // The exact fallback agrees with the exact formula whether the coordinates fit the
+  // stack integers (spreads of ~100 bits) or need GMP (a subnormal beside 2^600: a product
+  // of three differences then needs ~5000 bits).
+  for (const double far : {0x1p40, 0x1p600}) {
+    for (const double tiny : {0x1p-60, std::numeric_limits<double>::denorm_min()}) {
+      for (const double z : {tiny, -tiny, 0.0}) {
+        const std::array<Vec3, 8> x{Vec3(far, 0, 0),   Vec3(2 * far, 0, 0), Vec3(far, far, 0),
+                                    Vec3(far, 1, z),   Vec3(far, 0, 0),     Vec3(2 * far, 0, 0),
+                                    Vec3(far, far, 0), Vec3(far, 1, z)};
+        EXPECT_EQ(tested_sign(x), reference_sign(x)) << far << " " << tiny << " " << z;
+        for (int i = 0; i < 4; ++i) {
+          const int exact = detail::coplanarity_coefficient_sign_exact(i, x[0], x[1], x[2], x[3],
+                                                                       x[4], x[5], x[6], x[7]);
+          EXPECT_EQ(exact, z > 0 ? 1 : (z < 0 ? -1 : 0)) << far << " " << tiny << " " << i;
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tailor

@@ -6,26 +6,53 @@
 #include <stdexcept>
 
 #include "tailor/ccd/ccd_exact.hpp"
-#include "tailor/geometry/coplanarity_sign.hpp"
 
 namespace tailor {
 
-CcdResult vertex_face_ccd(const VertexFaceQuery& q) {
-  // Every contact needs the four points coplanar (f = 0).
-  if (coplanarity_sign(q.a_t0, q.b_t0, q.c_t0, q.p_t0, q.a_t1, q.b_t1, q.c_t1, q.p_t1) !=
-      StepSign::mixed) {
-    return {false, 1.0, CcdPath::filter};
+namespace {
+
+/// The non-coplanarity filter: f certainly keeps one strict sign over the step when all
+/// four certified coefficient signs agree. (Undecided signs are not settled exactly here:
+/// the later tiers handle those queries.)
+bool never_coplanar(const detail::CoplanarityBernstein& f) {
+  if (!f.valid) return false;
+  int positive = 0, negative = 0;
+  for (int i = 0; i < 4; ++i) {
+    positive += f.value[i] > f.bound[i];
+    negative += f.value[i] < -f.bound[i];
   }
-  if (auto r = detail::vertex_face_ccd_double(q)) return *r;
+  return positive == 4 || negative == 4;
+}
+
+}  // namespace
+
+const char* ccd_path_name(CcdPath path) {
+  switch (path) {
+    case CcdPath::filter:
+      return "filter";
+    case CcdPath::double_precision:
+      return "double";
+    case CcdPath::exact_signs:
+      return "exact_signs";
+    case CcdPath::exact:
+      return "exact";
+    case CcdPath::gmp:
+      return "gmp";
+  }
+  return "?";
+}
+
+CcdResult vertex_face_ccd(const VertexFaceQuery& q) {
+  const detail::CoplanarityBernstein f = detail::coplanarity_bernstein(q);
+  if (never_coplanar(f)) return {false, 1.0, CcdPath::filter};
+  if (auto r = detail::vertex_face_ccd_double(q, f)) return *r;
   return detail::vertex_face_ccd_exact(q);
 }
 
 CcdResult edge_edge_ccd(const EdgeEdgeQuery& q) {
-  if (coplanarity_sign(q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1, q.ea1_t1, q.eb0_t1,
-                       q.eb1_t1) != StepSign::mixed) {
-    return {false, 1.0, CcdPath::filter};
-  }
-  if (auto r = detail::edge_edge_ccd_double(q)) return *r;
+  const detail::CoplanarityBernstein f = detail::coplanarity_bernstein(q);
+  if (never_coplanar(f)) return {false, 1.0, CcdPath::filter};
+  if (auto r = detail::edge_edge_ccd_double(q, f)) return *r;
   return detail::edge_edge_ccd_exact(q);
 }
 

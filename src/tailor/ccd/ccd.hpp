@@ -14,9 +14,17 @@ namespace tailor {
 /// Which stage of the CCD decided a query.
 enum class CcdPath : std::uint8_t {
   filter,            ///< the certified non-coplanarity (Bernstein sign) filter
-  double_precision,  ///< the double path with a certified error bound
-  exact,             ///< the exact rational fallback
+  double_precision,  ///< the double tier with certified error bounds
+  exact_signs,       ///< the double tier, with signs too close to zero settled exactly
+  exact,             ///< the exact tier on fixed-size integers (no heap, no GMP)
+  gmp,               ///< the exact tier's last resort on GMP integers (numbers too wide)
 };
+
+/// Number of CcdPath values.
+inline constexpr int kCcdPathCount = 5;
+
+/// Short name of a path: "filter", "double", "exact_signs", "exact", "gmp".
+const char* ccd_path_name(CcdPath path);
 
 /// The answer for one query.
 struct CcdResult {

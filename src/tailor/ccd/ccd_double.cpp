@@ -1,263 +1,390 @@
 /// @file
-/// The certified double path: interval subdivision of [0, 1] in increasing t. A
-/// subinterval is skipped only when every contact branch is certainly impossible on all
-/// of it; a hit is claimed only when f certainly changes sign across a subinterval on
-/// which every inside condition is certainly strictly positive. Anything else goes to
-/// the exact path. All bounds are rigorous (interval.hpp); there is no epsilon.
+/// The certified double tier. Every contact is a root of the coplanarity cubic f, so:
+/// 1. isolate the roots of f in [0, 1] by Bernstein subdivision in double, with a
+///    certified bound on every coefficient's error (a node whose coefficients certainly
+///    share one sign holds no root; one certain sign change isolates one simple root);
+/// 2. narrow each root, in increasing order, to a bracket [t_a, t_b] across which f
+///    certainly changes sign (Newton, then two certified evaluations);
+/// 3. decide the projected conditions of ccd_systems.hpp over the bracket in ball
+///    arithmetic: certainly inside (a hit, toi = t_a) or certainly outside (next root).
+/// Nodes where f's sign pattern stays uncertain can still be skipped when the projected
+/// conditions certainly fail over the whole node. Anything else goes to the exact tier:
+/// the tier never guesses, it only answers what its bounds prove.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
 
+#include "tailor/ccd/ball.hpp"
 #include "tailor/ccd/ccd_exact.hpp"
 #include "tailor/ccd/ccd_systems.hpp"
 #include "tailor/geometry/coplanarity_sign.hpp"
-#include "tailor/ccd/interval.hpp"
 
 namespace tailor::detail {
 
 namespace {
 
-using IV = V3<Interval>;
-using Bern = std::array<Interval, 4>;
+using BV = V3<Ball>;
 
-/// Subintervals this narrow (2^-20 < 1e-6) locate the time of impact well enough.
-constexpr double kToiWidth = 0x1p-20;
-/// Work limits before giving the query to the exact path.
-constexpr int kMaxDepth = 36;
-constexpr int kMaxNodes = 128;
+constexpr double kU = 0x1p-53;
+/// Subdivision limits before giving the query to the exact tier.
+constexpr int kMaxDepth = 16;
+/// Brackets this narrow (2^-22 < 1e-6 / 2) locate the time of impact well enough.
+constexpr double kToiWidth = 0x1p-22;
 
-/// Coordinates beyond this (or non-finite) go to the exact path: keeps every interval
-/// product finite, so no NaN can arise.
-bool in_range(std::initializer_list<const Vec3*> points) {
-  for (const Vec3* x : points) {
-    for (int k = 0; k < 3; ++k) {
-      if (!(std::fabs((*x)[k]) <= 0x1p200)) return false;
-    }
-  }
-  return true;
-}
+/// f's Bernstein coefficients on [0, 1] and a bound on their errors.
+struct Cubic {
+  bool zero = false;  // every term of every coefficient is exactly zero: f == 0
+  double b[4];
+  double error;      // |computed - exact| <= error for every coefficient at the root
+  double magnitude;  // >= |every exact Bernstein coefficient on any subinterval|
+};
 
-Interval half(const Interval& x) {
-  return {next_down(x.lo * 0.5), next_up(x.hi * 0.5)};
-}
+/// Certified value of f at t (de Casteljau on the root coefficients): each level is a
+/// convex combination, so the error grows by at most 4u * magnitude per level.
+struct Value {
+  double v, err;
+  int sign() const { return v > err ? 1 : (v < -err ? -1 : 0); }
+};
 
-/// Rigorous Bernstein coefficients of f on [0, 1] from the certified filter values;
-/// `identically_zero` is set when every term of every coefficient is exactly zero.
-std::optional<Bern> coplanarity_bernstein(const Vec3& a0, const Vec3& b0, const Vec3& c0,
-                                          const Vec3& d0, const Vec3& a1, const Vec3& b1,
-                                          const Vec3& c1, const Vec3& d1, bool& identically_zero) {
-  double value[4], bound[4];
-  if (!coplanarity_bernstein_double(a0, b0, c0, d0, a1, b1, c1, d1, value, bound)) {
-    return std::nullopt;
-  }
-  identically_zero = bound[0] == 0.0 && bound[1] == 0.0 && bound[2] == 0.0 && bound[3] == 0.0;
-  Bern r;
-  for (int i = 0; i < 4; ++i) {
-    double lo = next_down(value[i] - bound[i]);
-    double hi = next_up(value[i] + bound[i]);
-    if (i == 1 || i == 2) {  // the filter values are 3β1, 3β2
-      lo = next_down(lo / 3.0);
-      hi = next_up(hi / 3.0);
-    }
-    r[i] = {lo, hi};
-  }
-  return r;
-}
-
-/// de Casteljau split at the middle, in interval arithmetic.
-void split(const Bern& b, Bern& left, Bern& right) {
-  const Interval b01 = half(b[0] + b[1]), b12 = half(b[1] + b[2]), b23 = half(b[2] + b[3]);
-  const Interval b012 = half(b01 + b12), b123 = half(b12 + b23);
-  const Interval mid = half(b012 + b123);
-  left = {b[0], b01, b012, mid};
-  right = {mid, b123, b23, b[3]};
-}
-
-/// f certainly has no root on the subinterval (all coefficients of one strict sign).
-bool excludes_zero(const Bern& b) {
-  return (b[0].positive() && b[1].positive() && b[2].positive() && b[3].positive()) ||
-         (b[0].negative() && b[1].negative() && b[2].negative() && b[3].negative());
-}
-
-/// f certainly changes sign between the ends of the subinterval.
-bool sign_change(const Bern& b) {
-  return (b[0].positive() && b[3].negative()) || (b[0].negative() && b[3].positive());
-}
-
-/// Enclosure of the moving point over [t1, t2].
-IV moving_point(const Vec3& x0, const Vec3& x1, double t1, double t2) {
-  auto coord = [&](int k) {
-    const Interval a(x0[k]), d = Interval(x1[k]) - a;
-    return hull(a + Interval(t1) * d, a + Interval(t2) * d);
-  };
-  return {coord(0), coord(1), coord(2)};
-}
-
-bool point_segment_empty(const IV& p, const IV& a, const IV& b) {
-  const PointSegment<Interval> s = point_segment(p, a, b);
-  return s.cross.x.nonzero() || s.cross.y.nonzero() || s.cross.z.nonzero() || s.along.negative() ||
-         s.within.negative();
+Value evaluate(const Cubic& f, double t, double* slope = nullptr) {
+  const double s = 1.0 - t;
+  double x0 = f.b[0], x1 = f.b[1], x2 = f.b[2], x3 = f.b[3];
+  x0 = s * x0 + t * x1;
+  x1 = s * x1 + t * x2;
+  x2 = s * x2 + t * x3;
+  x0 = s * x0 + t * x1;
+  x1 = s * x1 + t * x2;
+  if (slope != nullptr) *slope = 3.0 * (x1 - x0);
+  const double v = s * x0 + t * x1;
+  // 1 - t rounds (u), each level has two products and a sum: <= 5u magnitude per level.
+  return {v, (f.error + 15.0 * kU * f.magnitude + kBallEta) * kBallInflate};
 }
 
 struct Node {
   double t1, t2;
   int depth;
-  Bern f;
+  double c[4];
 };
 
-/// Outcome of one subinterval.
-enum class NodeState {
-  empty,          ///< no contact anywhere on the closed subinterval
-  root_hit,       ///< f changes sign and only roots of f can be contacts here
-  contact_at_t1,  ///< a contact at the subinterval's start (f identically zero)
-  contact,        ///< a contact somewhere in the subinterval (f identically zero)
-  unknown,
-};
+/// Position differences of a query relative to its first point, at t0 and the change
+/// over the step, as balls (the differences are rounded once).
+struct Motion {
+  BV x0[3], dx[3];
 
-/// Earliest root of f inside a node across which f certainly changes sign and where no
-/// contact other than a root of f is possible: toi within kToiWidth, or nullopt.
-std::optional<double> earliest_root(const Node& start) {
-  Node stack[kMaxDepth + 2];
-  int top = 0, nodes = 0;
-  stack[top++] = start;
-  while (top > 0) {
-    const Node n = stack[--top];
-    if (++nodes > kMaxNodes) return std::nullopt;
-    if (excludes_zero(n.f)) continue;
-    if (n.t2 - n.t1 <= kToiWidth) {
-      // Everything before n.t1 is root-free; a certified root here bounds the earliest.
-      if (sign_change(n.f)) return n.t1;
-      return std::nullopt;
+  /// The three relative points at every t in the ball `t`.
+  std::array<BV, 3> at(const Ball& t) const {
+    std::array<BV, 3> r;
+    for (int i = 0; i < 3; ++i) {
+      r[i] = {x0[i].x + t * dx[i].x, x0[i].y + t * dx[i].y, x0[i].z + t * dx[i].z};
     }
-    if (n.depth >= kMaxDepth) return std::nullopt;
-    const double tm = 0.5 * (n.t1 + n.t2);
-    Node l{n.t1, tm, n.depth + 1, {}}, r{tm, n.t2, n.depth + 1, {}};
-    split(n.f, l.f, r.f);
-    stack[top++] = r;
-    stack[top++] = l;
+    return r;
   }
-  return std::nullopt;
+};
+
+Ball rounded_difference(double a, double b) {
+  const double m = a - b;
+  return {m, kU * std::fabs(m) * kBallInflate};
 }
 
-/// The subdivision driver; `classify` says whether a node (where f may vanish) is empty,
-/// a certified hit, or unknown.
-template <class Classify>
-std::optional<CcdResult> subdivide(const Bern& f01, Classify&& classify) {
-  Node stack[kMaxDepth + 2];
-  int top = 0, nodes = 0;
-  stack[top++] = Node{0.0, 1.0, 0, f01};
-  while (top > 0) {
-    const Node n = stack[--top];
-    if (++nodes > kMaxNodes) return std::nullopt;
-    // Every branch implies f = 0.
-    if (excludes_zero(n.f)) continue;
-    const NodeState s = classify(n.t1, n.t2, sign_change(n.f));
-    // Everything before n.t1 is certified contact-free (left-first order).
-    if (s == NodeState::empty) continue;
-    if (s == NodeState::root_hit) {
-      const std::optional<double> toi = earliest_root(n);
-      if (!toi) return std::nullopt;
-      return CcdResult{true, *toi, CcdPath::double_precision};
+Motion make_motion(const Vec3* t0[4], const Vec3* t1[4]) {
+  Motion m;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 &p0 = *t0[i + 1], &r0 = *t0[0], &p1 = *t1[i + 1], &r1 = *t1[0];
+    const Ball x0[3] = {rounded_difference(p0[0], r0[0]), rounded_difference(p0[1], r0[1]),
+                        rounded_difference(p0[2], r0[2])};
+    const Ball x1[3] = {rounded_difference(p1[0], r1[0]), rounded_difference(p1[1], r1[1]),
+                        rounded_difference(p1[2], r1[2])};
+    m.x0[i] = {x0[0], x0[1], x0[2]};
+    m.dx[i] = {x1[0] - x0[0], x1[1] - x0[1], x1[2] - x0[2]};
+  }
+  return m;
+}
+
+/// The axis k with the largest |(x × y)_k| (midpoints only) and that component as a ball
+/// (computing one ball component instead of three).
+int largest_cross_axis(const BV& x, const BV& y, Ball& component_k) {
+  const double c[3] = {x.y.m * y.z.m - x.z.m * y.y.m, x.z.m * y.x.m - x.x.m * y.z.m,
+                       x.x.m * y.y.m - x.y.m * y.x.m};
+  int k = 0;
+  if (std::fabs(c[1]) > std::fabs(c[k])) k = 1;
+  if (std::fabs(c[2]) > std::fabs(c[k])) k = 2;
+  component_k = cross_component(x, y, k);
+  return k;
+}
+
+enum class Verdict { outside, inside, unknown };
+
+/// A root of f certified in [lo, hi] (sign_lo: f's sign at lo): what the exact assist
+/// needs to settle the signs the balls leave open.
+struct RootBracket {
+  double lo, hi;
+  int sign_lo;
+  mutable bool used_exact = false;  // set when the exact assist decided a sign
+};
+
+/// VF projected test over every coplanar instant in the ball t: certainly no contact
+/// (outside), certainly a contact (inside), or unknown. With a root bracket, signs the
+/// balls cannot separate from zero are settled exactly (vertex_face_signs_at_root).
+Verdict vf_verdict(const Motion& motion, const Ball& t, const VertexFaceQuery* query = nullptr,
+                   const RootBracket* root = nullptr) {
+  const auto [u, v, w] = motion.at(t);  // b - a, c - a, p - a
+  Ball nk;
+  const int k = largest_cross_axis(u, v, nk);
+  const int s = nk.sign();
+  if (s == 0) return Verdict::unknown;
+  const BV zero{Ball(0.0), Ball(0.0), Ball(0.0)};
+  int e[3] = {cross_component(u, w, k).sign(), cross_component(v - u, w - u, k).sign(),
+              cross_component(zero - v, w - v, k).sign()};
+  int open[3], count = 0;
+  for (int i = 0; i < 3; ++i) {
+    if (e[i] * s < 0) return Verdict::outside;
+    if (e[i] == 0) open[count++] = i + 1;
+  }
+  if (count == 0) return Verdict::inside;
+  if (root == nullptr) return Verdict::unknown;
+  int exact[3];
+  if (!vertex_face_signs_at_root(*query, k, open, count, root->lo, root->hi, root->sign_lo,
+                                 exact)) {
+    return Verdict::unknown;
+  }
+  root->used_exact = true;
+  for (int i = 0; i < count; ++i) {
+    if (exact[i] * s < 0) return Verdict::outside;
+  }
+  return Verdict::inside;  // every edge orientation agrees with n_k or vanishes
+}
+
+/// EE projected test: certainly apart, certainly meeting, or unknown (see vf_verdict).
+Verdict ee_verdict(const Motion& motion, const Ball& t, const EdgeEdgeQuery* query = nullptr,
+                   const RootBracket* root = nullptr) {
+  const auto [u, v, w] = motion.at(t);  // b - a, c - a, d - a
+  const BV dc = w - v;
+  Ball mk;
+  const int k = largest_cross_axis(u, dc, mk);
+  if (mk.sign() == 0) return Verdict::unknown;
+  const BV zero{Ball(0.0), Ball(0.0), Ball(0.0)};
+  int o[4] = {cross_component(u, v, k).sign(), cross_component(u, w, k).sign(),
+              cross_component(dc, zero - v, k).sign(), cross_component(dc, u - v, k).sign()};
+  if (o[0] * o[1] > 0 || o[2] * o[3] > 0) return Verdict::outside;
+  if (o[0] * o[1] < 0 && o[2] * o[3] < 0) return Verdict::inside;
+  if (root == nullptr) return Verdict::unknown;
+  int open[4], count = 0;
+  for (int i = 0; i < 4; ++i) {
+    if (o[i] == 0) open[count++] = i + 1;
+  }
+  int exact[4];
+  if (!edge_edge_signs_at_root(*query, k, open, count, root->lo, root->hi, root->sign_lo, exact)) {
+    return Verdict::unknown;
+  }
+  root->used_exact = true;
+  for (int i = 0; i < count; ++i) o[open[i] - 1] = exact[i];
+  return o[0] * o[1] <= 0 && o[2] * o[3] <= 0 ? Verdict::inside : Verdict::outside;
+}
+
+/// A bracket [t_a, t_b] inside the isolating node where f certainly changes sign, at most
+/// kToiWidth wide, or nullopt.
+std::optional<std::array<double, 2>> bracket_root(const Cubic& f, const Node& node, int sign_left) {
+  // Newton from the middle, kept inside the node, until its step is well below the
+  // bracket we want (convergence is quadratic: the error is then far smaller still).
+  double t = 0.5 * (node.t1 + node.t2), step = node.t2 - node.t1;
+  for (int i = 0; i < 8 && std::fabs(step) > 0x1p-30; ++i) {
+    double slope = 0.0;
+    const Value v = evaluate(f, t, &slope);
+    if (!(slope != 0.0)) break;
+    const double next = t - v.v / slope;
+    if (!(next > node.t1 && next < node.t2)) break;
+    step = next - t;
+    t = next;
+  }
+  double slope = 0.0;
+  const Value at = evaluate(f, t, &slope);
+  // Half-width where |f| should clear its error bound (and beyond Newton's last step),
+  // then 16 and 256 times wider.
+  double delta = std::fabs(slope) > 0.0 ? 4.0 * at.err / std::fabs(slope) : kToiWidth;
+  delta = std::clamp(std::fmax(delta, 2.0 * std::fabs(step)), 0x1p-40, kToiWidth * 0.5);
+  for (int attempt = 0; attempt < 3; ++attempt, delta = std::min(delta * 16.0, kToiWidth * 0.5)) {
+    const double ta = std::max(node.t1, t - delta), tb = std::min(node.t2, t + delta);
+    const int sa = ta == node.t1 ? sign_left : evaluate(f, ta).sign();
+    const int sb = tb == node.t2 ? -sign_left : evaluate(f, tb).sign();
+    if (sa == sign_left && sb == -sign_left && tb - ta <= kToiWidth) {
+      return std::array<double, 2>{ta, tb};
     }
-    if (s == NodeState::contact_at_t1 || (s == NodeState::contact && n.t2 - n.t1 <= kToiWidth)) {
+  }
+  // Certified bisection of the node.
+  double lo = node.t1, hi = node.t2;
+  for (int i = 0; i < 64 && hi - lo > kToiWidth; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    const int s = evaluate(f, mid).sign();
+    if (s == 0) return std::nullopt;
+    (s == sign_left ? lo : hi) = mid;
+  }
+  if (hi - lo > kToiWidth) return std::nullopt;
+  return std::array<double, 2>{lo, hi};
+}
+
+int certain_sign(double c, double err) {
+  return c > err ? 1 : (c < -err ? -1 : 0);
+}
+
+/// f == 0: every instant is coplanar. Left-first subdivision of [0, 1] by the projected
+/// test: a node where no instant can be a contact is skipped; a contact certain at a node's
+/// start (or at its end, once the node is narrower than kToiWidth) is the earliest, since
+/// everything before was skipped.
+template <class VerdictFn>
+std::optional<CcdResult> decide_coplanar(VerdictFn&& verdict) {
+  struct Span {
+    double t1, t2;
+    int depth;
+  };
+  constexpr int kMaxCoplanarDepth = 6, kMaxNodes = 12;
+  Span stack[kMaxCoplanarDepth + 2];
+  int top = 0, nodes = 0;
+  stack[top++] = Span{0.0, 1.0, 0};
+  while (top > 0) {
+    const Span n = stack[--top];
+    if (++nodes > kMaxNodes) return std::nullopt;
+    if (verdict(ball_hull(n.t1, n.t2), nullptr) == Verdict::outside) continue;
+    if (verdict(Ball(n.t1), nullptr) == Verdict::inside) {
       return CcdResult{true, n.t1, CcdPath::double_precision};
     }
-    if (n.depth >= kMaxDepth) return std::nullopt;
+    if (n.t2 - n.t1 <= kToiWidth) {
+      if (verdict(Ball(n.t2), nullptr) == Verdict::inside) {
+        return CcdResult{true, n.t1, CcdPath::double_precision};
+      }
+      return std::nullopt;
+    }
+    if (n.depth >= kMaxCoplanarDepth) return std::nullopt;
     const double tm = 0.5 * (n.t1 + n.t2);
-    Node l{n.t1, tm, n.depth + 1, {}}, r{tm, n.t2, n.depth + 1, {}};
-    split(n.f, l.f, r.f);
-    stack[top++] = r;
-    stack[top++] = l;
+    stack[top++] = Span{tm, n.t2, n.depth + 1};
+    stack[top++] = Span{n.t1, tm, n.depth + 1};
   }
   return CcdResult{false, 1.0, CcdPath::double_precision};
 }
 
+/// The tier on one query: `verdict(t, root)` is vf_verdict or ee_verdict (root: the
+/// certified bracket when t is one, else null).
+template <class VerdictFn>
+std::optional<CcdResult> decide(const Cubic& f, VerdictFn&& verdict) {
+  if (f.zero) return decide_coplanar(verdict);
+  Node stack[kMaxDepth + 2];
+  int top = 0;
+  stack[top++] = Node{0.0, 1.0, 0, {f.b[0], f.b[1], f.b[2], f.b[3]}};
+  bool used_exact = false;
+  while (top > 0) {
+    const Node n = stack[--top];
+    // Error of the node's coefficients: three averaging levels per split.
+    const double err = (f.error + 3.0 * n.depth * (kU * f.magnitude + kBallEta)) * kBallInflate;
+    int s[4];
+    int changes = 0, last = 0;
+    bool all_certain = true;
+    for (int i = 0; i < 4; ++i) {
+      s[i] = certain_sign(n.c[i], err);
+      all_certain &= s[i] != 0;
+      if (s[i] != 0 && last != 0 && s[i] != last) ++changes;
+      if (s[i] != 0) last = s[i];
+    }
+    if (all_certain && changes == 0) continue;  // no root on the node
+    if (all_certain && changes == 1) {
+      // One simple root: decide the conditions across a narrow bracket around it.
+      const auto bracket = bracket_root(f, n, s[0]);
+      if (!bracket) return std::nullopt;
+      const RootBracket root{(*bracket)[0], (*bracket)[1], s[0]};
+      const Verdict v = verdict(ball_hull(root.lo, root.hi), &root);
+      used_exact |= root.used_exact;
+      const CcdPath path = used_exact ? CcdPath::exact_signs : CcdPath::double_precision;
+      if (v == Verdict::inside) return CcdResult{true, root.lo, path};
+      if (v == Verdict::outside) continue;
+      return std::nullopt;
+    }
+    // Several roots, or a coefficient too close to zero to know: skip the node if no
+    // coplanar instant in it can be a contact; if p may be inside throughout, only the
+    // exact tier can tell whether f vanishes there.
+    if (n.depth >= 2 || !all_certain) {
+      const Verdict v = verdict(ball_hull(n.t1, n.t2), nullptr);
+      if (v == Verdict::outside) continue;
+      if (v == Verdict::inside && !all_certain) return std::nullopt;
+    }
+    if (n.depth >= kMaxDepth) return std::nullopt;
+    const double tm = 0.5 * (n.t1 + n.t2);
+    const double* c = n.c;
+    const double c01 = 0.5 * (c[0] + c[1]), c12 = 0.5 * (c[1] + c[2]), c23 = 0.5 * (c[2] + c[3]);
+    const double c012 = 0.5 * (c01 + c12), c123 = 0.5 * (c12 + c23);
+    const double mid = 0.5 * (c012 + c123);
+    stack[top++] = Node{tm, n.t2, n.depth + 1, {mid, c123, c23, c[3]}};
+    stack[top++] = Node{n.t1, tm, n.depth + 1, {c[0], c01, c012, mid}};
+  }
+  return CcdResult{false, 1.0, used_exact ? CcdPath::exact_signs : CcdPath::double_precision};
+}
+
+/// f's coefficients from the filter's values (value[1], value[2] are 3 b1, 3 b2).
+std::optional<Cubic> make_cubic(const CoplanarityBernstein& filter) {
+  if (!filter.valid) return std::nullopt;
+  Cubic f;
+  f.b[0] = filter.value[0];
+  f.b[1] = filter.value[1] / 3.0;
+  f.b[2] = filter.value[2] / 3.0;
+  f.b[3] = filter.value[3];
+  double error = 0.0, magnitude = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    const double e =
+        (i == 1 || i == 2) ? filter.bound[i] / 3.0 + kU * std::fabs(f.b[i]) : filter.bound[i];
+    error = std::max(error, e);
+    magnitude = std::max(magnitude, std::fabs(f.b[i]));
+  }
+  // Every term exactly zero: f is identically zero (coplanar for the whole step).
+  f.zero = error == 0.0 && magnitude == 0.0;
+  f.error = error * kBallInflate;
+  f.magnitude = (magnitude + f.error) * kBallInflate;
+  if (!std::isfinite(f.magnitude)) return std::nullopt;
+  return f;
+}
+
 }  // namespace
 
-std::optional<CcdResult> vertex_face_ccd_double(const VertexFaceQuery& q) {
-  if (!in_range({&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0, &q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1})) {
-    return std::nullopt;
-  }
-  bool f_zero = false;
-  const auto f =
-      coplanarity_bernstein(q.a_t0, q.b_t0, q.c_t0, q.p_t0, q.a_t1, q.b_t1, q.c_t1, q.p_t1, f_zero);
+CoplanarityBernstein coplanarity_bernstein(const VertexFaceQuery& q) {
+  CoplanarityBernstein r;
+  r.valid = coplanarity_bernstein_double(q.a_t0, q.b_t0, q.c_t0, q.p_t0, q.a_t1, q.b_t1, q.c_t1,
+                                         q.p_t1, r.value, r.bound);
+  return r;
+}
+
+CoplanarityBernstein coplanarity_bernstein(const EdgeEdgeQuery& q) {
+  CoplanarityBernstein r;
+  r.valid = coplanarity_bernstein_double(q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1, q.ea1_t1,
+                                         q.eb0_t1, q.eb1_t1, r.value, r.bound);
+  return r;
+}
+
+std::optional<CcdResult> vertex_face_ccd_double(const VertexFaceQuery& q,
+                                                const CoplanarityBernstein& filter) {
+  const auto f = make_cubic(filter);
   if (!f) return std::nullopt;
-  auto points = [&](double t1, double t2) {
-    return std::array<IV, 4>{
-        moving_point(q.p_t0, q.p_t1, t1, t2), moving_point(q.a_t0, q.a_t1, t1, t2),
-        moving_point(q.b_t0, q.b_t1, t1, t2), moving_point(q.c_t0, q.c_t1, t1, t2)};
-  };
-  // p certainly inside the open, non-degenerate triangle.
-  auto strictly_inside = [](const FaceConditions<Interval>& fc) {
-    return fc.N.positive() && fc.E_ab.positive() && fc.E_bc.positive() && fc.E_ca.positive();
-  };
-  return subdivide(*f, [&](double t1, double t2, bool f_changes_sign) {
-    if (f_zero) {
-      // Coplanar for the whole step: strictly inside at an instant is a contact then.
-      const auto [p, a, b, c] = points(t1, t1);
-      if (strictly_inside(face_conditions(p, a, b, c))) return NodeState::contact_at_t1;
-    }
-    const auto [p, a, b, c] = points(t1, t2);
-    const FaceConditions<Interval> fc = face_conditions(p, a, b, c);
-    // A root of f inside the open triangle: p is on no edge line (each E > 0), so the only
-    // contacts on this node are roots of f.
-    if (f_changes_sign && strictly_inside(fc)) return NodeState::root_hit;
-    const bool face_empty =
-        !(fc.N.hi > 0.0) || fc.E_ab.negative() || fc.E_bc.negative() || fc.E_ca.negative();
-    if (face_empty && point_segment_empty(p, a, b) && point_segment_empty(p, b, c) &&
-        point_segment_empty(p, c, a)) {
-      return NodeState::empty;
-    }
-    if (f_zero && t2 - t1 <= kToiWidth) {
-      const auto [p2, a2, b2, c2] = points(t2, t2);
-      if (strictly_inside(face_conditions(p2, a2, b2, c2))) return NodeState::contact;
-    }
-    return NodeState::unknown;
-  });
+  const Vec3* t0[4] = {&q.a_t0, &q.b_t0, &q.c_t0, &q.p_t0};
+  const Vec3* t1[4] = {&q.a_t1, &q.b_t1, &q.c_t1, &q.p_t1};
+  const Motion motion = make_motion(t0, t1);
+  return decide(
+      *f, [&](const Ball& t, const RootBracket* root) { return vf_verdict(motion, t, &q, root); });
+}
+
+std::optional<CcdResult> edge_edge_ccd_double(const EdgeEdgeQuery& q,
+                                              const CoplanarityBernstein& filter) {
+  const auto f = make_cubic(filter);
+  if (!f) return std::nullopt;
+  const Vec3* t0[4] = {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0};
+  const Vec3* t1[4] = {&q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1};
+  const Motion motion = make_motion(t0, t1);
+  return decide(
+      *f, [&](const Ball& t, const RootBracket* root) { return ee_verdict(motion, t, &q, root); });
+}
+
+std::optional<CcdResult> vertex_face_ccd_double(const VertexFaceQuery& q) {
+  return vertex_face_ccd_double(q, coplanarity_bernstein(q));
 }
 
 std::optional<CcdResult> edge_edge_ccd_double(const EdgeEdgeQuery& q) {
-  if (!in_range({&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0, &q.ea0_t1, &q.ea1_t1, &q.eb0_t1,
-                 &q.eb1_t1})) {
-    return std::nullopt;
-  }
-  bool f_zero = false;
-  const auto f = coplanarity_bernstein(q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1, q.ea1_t1,
-                                       q.eb0_t1, q.eb1_t1, f_zero);
-  if (!f) return std::nullopt;
-  auto points = [&](double t1, double t2) {
-    return std::array<IV, 4>{
-        moving_point(q.ea0_t0, q.ea0_t1, t1, t2), moving_point(q.ea1_t0, q.ea1_t1, t1, t2),
-        moving_point(q.eb0_t0, q.eb0_t1, t1, t2), moving_point(q.eb1_t0, q.eb1_t1, t1, t2)};
-  };
-  // The lines certainly cross at interior points of both segments (0 < s, u < 1).
-  auto strictly_crossing = [](const EdgeConditions<Interval>& ec) {
-    return ec.M.positive() && ec.S_.positive() && ec.M_minus_S.positive() && ec.U.positive() &&
-           ec.M_minus_U.positive();
-  };
-  return subdivide(*f, [&](double t1, double t2, bool f_changes_sign) {
-    if (f_zero) {
-      const auto [a, b, c, d] = points(t1, t1);
-      if (strictly_crossing(edge_conditions(a, b, c, d))) return NodeState::contact_at_t1;
-    }
-    const auto [a, b, c, d] = points(t1, t2);
-    const EdgeConditions<Interval> ec = edge_conditions(a, b, c, d);
-    // Crossing at interior points: no endpoint lies on the other segment, so the only
-    // contacts here are roots of f.
-    if (f_changes_sign && strictly_crossing(ec)) return NodeState::root_hit;
-    const bool main_empty = !(ec.M.hi > 0.0) || ec.S_.negative() || ec.M_minus_S.negative() ||
-                            ec.U.negative() || ec.M_minus_U.negative();
-    if (main_empty && point_segment_empty(a, c, d) && point_segment_empty(b, c, d) &&
-        point_segment_empty(c, a, b) && point_segment_empty(d, a, b)) {
-      return NodeState::empty;
-    }
-    if (f_zero && t2 - t1 <= kToiWidth) {
-      const auto [a2, b2, c2, d2] = points(t2, t2);
-      if (strictly_crossing(edge_conditions(a2, b2, c2, d2))) return NodeState::contact;
-    }
-    return NodeState::unknown;
-  });
+  return edge_edge_ccd_double(q, coplanarity_bernstein(q));
 }
 
 }  // namespace tailor::detail

@@ -1,180 +1,177 @@
+/// @file
+/// Entry points of the exact tier: the query's doubles as exact integers relative to its
+/// first point, then the decision of exact_contact.hpp on FixedInt, or on BigInt when a
+/// number does not fit.
+
 #include "tailor/ccd/ccd_exact.hpp"
 
-#include <gmpxx.h>
-
-#include <algorithm>
+#include <array>
+#include <bit>
+#include <climits>
 #include <cmath>
-#include <optional>
+#include <cstdint>
 #include <stdexcept>
-#include <vector>
 
-#include "tailor/ccd/ccd_systems.hpp"
-#include "tailor/ccd/exact_polynomial.hpp"
+#include "tailor/ccd/big_int.hpp"
+#include "tailor/ccd/exact_contact.hpp"
+#include "tailor/geometry/fixed_int.hpp"
 
 namespace tailor::detail {
 
 namespace {
 
-using PV = V3<ExactPoly>;
+/// 32 limbs (2048 bits): the largest intermediate of the exact tier is about 16 times the
+/// bit width of the query's coordinate differences (a pseudo-remainder chain), so every
+/// query whose coordinates span up to ~120 bits (after the common power-of-two scaling)
+/// stays on the stack; float data spans ~30, double data of one scene ~50-100. Only the
+/// used limbs are ever touched or copied, so the capacity costs stack space, not time.
+using Fixed = FixedInt<32>;
 
-/// The power of two that makes every coordinate an integer: scaling all positions by a
-/// common positive factor scales every polynomial by a positive constant (signs and roots
-/// unchanged), and integer coefficients keep the rational arithmetic cheap.
-long integer_scale(std::initializer_list<const Vec3*> points) {
-  long k = 0;
-  for (const Vec3* x : points) {
-    for (int i = 0; i < 3; ++i) {
-      const double v = (*x)[i];
+using Points = std::array<const Vec3*, 8>;  // four points at t0, then the same at t1
+
+void check_finite(const Points& x) {
+  for (const Vec3* p : x) {
+    if (!p->allFinite()) throw std::invalid_argument("ccd: non-finite coordinate");
+  }
+}
+
+/// Points 1..3 minus point 0, as linear polynomials in t, all coordinates scaled by one
+/// power of two that makes them integers (which scales every condition by a positive
+/// constant: signs and roots do not change).
+template <class Z>
+std::array<PolyVec<Z>, 3> relative_polys(const Points& x) {
+  std::uint64_t mantissa[8][3];
+  int exponent[8][3];
+  int lowest = INT_MAX;
+  for (int i = 0; i < 8; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      const double v = (*x[i])[k];
+      mantissa[i][k] = 0;
+      exponent[i][k] = 0;
       if (v == 0.0) continue;
-      int e = 0;
-      const double m = std::frexp(v, &e);  // v = m 2^e, 0.5 <= |m| < 1
-      // m 2^53 is an integer; drop its trailing zero bits.
-      auto mi = static_cast<long long>(std::ldexp(m, 53));
-      long shift = 53 - e;
-      while ((mi & 1) == 0) {
-        mi >>= 1;
-        --shift;
-      }
-      k = std::max(k, shift);
+      decompose_double(v, mantissa[i][k], exponent[i][k]);
+      lowest = std::min(lowest, exponent[i][k]);
     }
   }
-  return k;
-}
-
-/// The linearly moving point (x0 + t (x1 - x0)) 2^scale, exactly.
-PV moving_point(const Vec3& x0, const Vec3& x1, long scale) {
-  auto coord = [&](int k) {
-    mpq_class a(x0[k]), b(x1[k]);
-    mpq_mul_2exp(a.get_mpq_t(), a.get_mpq_t(), static_cast<mp_bitcnt_t>(scale));
-    mpq_mul_2exp(b.get_mpq_t(), b.get_mpq_t(), static_cast<mp_bitcnt_t>(scale));
-    return ExactPoly::linear(a, b - a);
-  };
-  return {coord(0), coord(1), coord(2)};
-}
-
-void check_finite(std::initializer_list<const Vec3*> points) {
-  for (const Vec3* x : points) {
-    if (!x->allFinite()) throw std::invalid_argument("ccd: non-finite coordinate");
-  }
-}
-
-/// 2^-21 < 1e-6 / 2: the lower bounds are within it of the infimum.
-const mpq_class& tolerance() {
-  static const mpq_class tol(mpz_class(1), mpz_class(1) << 21);
-  return tol;
-}
-
-/// Earliest t where p lies on the closed segment ab.
-std::optional<mpq_class> point_on_segment(const PV& p, const PV& a, const PV& b) {
-  const PointSegment<ExactPoly> s = point_segment(p, a, b);
-  // The cross product vanishes exactly at the common roots of its three components.
-  const ExactPoly common = poly_gcd(poly_gcd(s.cross.x, s.cross.y), s.cross.z);
-  return earliest_solution(common, {{s.along, false}, {s.within, false}}, tolerance());
-}
-
-void keep_min(std::optional<mpq_class>& best, const std::optional<mpq_class>& x) {
-  if (x && (!best || *x < *best)) best = x;
-}
-
-CcdResult to_result(const std::optional<mpq_class>& toi) {
-  CcdResult r;
-  r.path = CcdPath::exact;
-  if (toi) {
-    r.hit = true;
-    r.toi = toi->get_d();  // truncates toward zero: never later than the bound (>= 0)
-  }
-  return r;
-}
-
-bool holds(int sign, bool strict) {
-  return strict ? sign > 0 : sign >= 0;
-}
-
-/// Point p on closed segment ab at root r of squarefree fs (f != 0).
-bool point_on_segment_at(const ExactPoly& fs, RealRoot& r, const PointSegment<ExactPoly>& s) {
-  return sign_at_root(fs, r, s.cross.x) == 0 && sign_at_root(fs, r, s.cross.y) == 0 &&
-         sign_at_root(fs, r, s.cross.z) == 0 && sign_at_root(fs, r, s.along) >= 0 &&
-         sign_at_root(fs, r, s.within) >= 0;
-}
-
-/// f != 0: every contact is at a root of f, so walk its roots in increasing order and stop
-/// at the first one where the main system or an endpoint-on-segment branch holds.
-/// `main` lists the main system's conditions; `segments(i)` gives branch i (0..n-1).
-template <class Segments>
-std::optional<mpq_class> first_root_contact(const ExactPoly& f,
-                                            const std::vector<SignCondition>& main,
-                                            int segment_count, Segments&& segments) {
-  const ExactPoly fs = squarefree_part(f);
-  std::vector<RealRoot> roots = isolate_roots_unit(fs);
-  std::vector<std::optional<PointSegment<ExactPoly>>> cache(segment_count);
-  for (RealRoot& r : roots) {
-    bool ok = true;
-    for (const auto& c : main) {
-      if (!holds(sign_at_root(fs, r, c.poly), c.strict)) {
-        ok = false;
-        break;
-      }
+  Z value[8][3];
+  for (int i = 0; i < 8; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      if (mantissa[i][k] == 0) continue;
+      value[i][k] = Z::scaled(mantissa[i][k], exponent[i][k] - lowest, (*x[i])[k] < 0.0);
     }
-    for (int i = 0; !ok && i < segment_count; ++i) {
-      if (!cache[i]) cache[i] = segments(i);
-      ok = point_on_segment_at(fs, r, *cache[i]);
-    }
-    if (ok) return root_lower_bound(fs, r, tolerance());
   }
-  return std::nullopt;
+  std::array<PolyVec<Z>, 3> out;
+  for (int i = 1; i <= 3; ++i) {
+    Poly<Z>* comp[3] = {&out[i - 1].x, &out[i - 1].y, &out[i - 1].z};
+    for (int k = 0; k < 3; ++k) {
+      const Z d0 = value[i][k] - value[0][k];
+      const Z d1 = value[i + 4][k] - value[4][k];
+      *comp[k] = Poly<Z>::linear(d0, d1 - d0);
+    }
+  }
+  return out;
+}
+
+CcdResult to_result(const std::optional<double>& toi, CcdPath path) {
+  return toi ? CcdResult{true, *toi, path} : CcdResult{false, 1.0, path};
+}
+
+template <class Z>
+CcdResult vertex_face_with(const VertexFaceQuery& q, CcdPath path) {
+  const auto rel =
+      relative_polys<Z>({&q.a_t0, &q.b_t0, &q.c_t0, &q.p_t0, &q.a_t1, &q.b_t1, &q.c_t1, &q.p_t1});
+  const VfPolys<Z> s(rel[0], rel[1], rel[2]);
+  return to_result(earliest_contact<Z>(s), path);
+}
+
+template <class Z>
+CcdResult edge_edge_with(const EdgeEdgeQuery& q, CcdPath path) {
+  const auto rel = relative_polys<Z>(
+      {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0, &q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1});
+  const EePolys<Z> s(rel[0], rel[1], rel[2]);
+  return to_result(earliest_contact<Z>(s), path);
+}
+
+/// Exact signs of the listed conditions at the root of s.f in (lo, hi).
+template <class Z, class Polys, class Condition>
+void signs_at_root(const Polys& s, Condition&& condition, const int* which, int count, double lo,
+                   double hi, int sign_lo, int* signs) {
+  RootPoint<Z> r =
+      RootPoint<Z>::isolated(s.f, Dyadic<Z>::from_double(lo), Dyadic<Z>::from_double(hi), sign_lo);
+  for (int i = 0; i < count; ++i) {
+    const Poly<Z>& q = condition(which[i]);
+    // The double tier could not separate these from zero: test for zero first.
+    signs[i] =
+        r.kind == RootPoint<Z>::Kind::isolated && vanishes_at_isolated(q, r) ? 0 : sign_at(q, r);
+  }
 }
 
 }  // namespace
 
+bool vertex_face_signs_at_root(const VertexFaceQuery& q, int axis, const int* which, int count,
+                               double lo, double hi, int sign_lo, int* signs) {
+  try {
+    const auto rel = relative_polys<Fixed>(
+        {&q.a_t0, &q.b_t0, &q.c_t0, &q.p_t0, &q.a_t1, &q.b_t1, &q.c_t1, &q.p_t1});
+    const VfPolys<Fixed> s(rel[0], rel[1], rel[2]);
+    signs_at_root<Fixed>(
+        s,
+        [&](int c) -> const Poly<Fixed>& {
+          return c == 0 ? component(s.n, axis) : s.edge(c - 1, axis);
+        },
+        which, count, lo, hi, sign_lo, signs);
+    return true;
+  } catch (const CapacityExceeded&) {
+    return false;
+  }
+}
+
+bool edge_edge_signs_at_root(const EdgeEdgeQuery& q, int axis, const int* which, int count,
+                             double lo, double hi, int sign_lo, int* signs) {
+  try {
+    const auto rel = relative_polys<Fixed>(
+        {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0, &q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1});
+    const EePolys<Fixed> s(rel[0], rel[1], rel[2]);
+    signs_at_root<Fixed>(
+        s,
+        [&](int c) -> const Poly<Fixed>& {
+          return c == 0 ? component(s.m, axis) : s.orientation(c - 1, axis);
+        },
+        which, count, lo, hi, sign_lo, signs);
+    return true;
+  } catch (const CapacityExceeded&) {
+    return false;
+  }
+}
+
 CcdResult vertex_face_ccd_exact(const VertexFaceQuery& q) {
   check_finite({&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0, &q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1});
-  const long s =
-      integer_scale({&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0, &q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1});
-  const PV p = moving_point(q.p_t0, q.p_t1, s), a = moving_point(q.a_t0, q.a_t1, s),
-           b = moving_point(q.b_t0, q.b_t1, s), c = moving_point(q.c_t0, q.c_t1, s);
-  // Every branch needs f = 0 (p coplanar with the triangle).
-  const ExactPoly f = coplanarity(a, b, c, p);
-  if (!f.is_zero() && f.degree() == 0) return to_result({});
-  const FaceConditions<ExactPoly> fc = face_conditions(p, a, b, c);
-  const std::vector<SignCondition> main{
-      {fc.N, true}, {fc.E_ab, false}, {fc.E_bc, false}, {fc.E_ca, false}};
-  if (!f.is_zero()) {
-    const PV* ends[3][2] = {{&a, &b}, {&b, &c}, {&c, &a}};
-    return to_result(first_root_contact(
-        f, main, 3, [&](int i) { return point_segment(p, *ends[i][0], *ends[i][1]); }));
+  try {
+    return vertex_face_with<Fixed>(q, CcdPath::exact);
+  } catch (const CapacityExceeded&) {
+    return vertex_face_with<BigInt>(q, CcdPath::gmp);
   }
-  std::optional<mpq_class> best = earliest_solution(f, main, tolerance());
-  keep_min(best, point_on_segment(p, a, b));
-  keep_min(best, point_on_segment(p, b, c));
-  keep_min(best, point_on_segment(p, c, a));
-  return to_result(best);
 }
 
 CcdResult edge_edge_ccd_exact(const EdgeEdgeQuery& q) {
   check_finite(
       {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0, &q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1});
-  const long s = integer_scale(
-      {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0, &q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1});
-  const PV a = moving_point(q.ea0_t0, q.ea0_t1, s), b = moving_point(q.ea1_t0, q.ea1_t1, s),
-           c = moving_point(q.eb0_t0, q.eb0_t1, s), d = moving_point(q.eb1_t0, q.eb1_t1, s);
-  const ExactPoly f = coplanarity(a, b, c, d);
-  if (!f.is_zero() && f.degree() == 0) return to_result({});
-  const EdgeConditions<ExactPoly> ec = edge_conditions(a, b, c, d);
-  const std::vector<SignCondition> main{
-      {ec.M, true}, {ec.S_, false}, {ec.M_minus_S, false}, {ec.U, false}, {ec.M_minus_U, false}};
-  if (!f.is_zero()) {
-    // Endpoint on the other segment: a and b on cd, c and d on ab.
-    const PV* cases[4][3] = {{&a, &c, &d}, {&b, &c, &d}, {&c, &a, &b}, {&d, &a, &b}};
-    return to_result(first_root_contact(f, main, 4, [&](int i) {
-      return point_segment(*cases[i][0], *cases[i][1], *cases[i][2]);
-    }));
+  try {
+    return edge_edge_with<Fixed>(q, CcdPath::exact);
+  } catch (const CapacityExceeded&) {
+    return edge_edge_with<BigInt>(q, CcdPath::gmp);
   }
-  std::optional<mpq_class> best = earliest_solution(f, main, tolerance());
-  keep_min(best, point_on_segment(a, c, d));
-  keep_min(best, point_on_segment(b, c, d));
-  keep_min(best, point_on_segment(c, a, b));
-  keep_min(best, point_on_segment(d, a, b));
-  return to_result(best);
+}
+
+CcdResult vertex_face_ccd_exact_gmp(const VertexFaceQuery& q) {
+  check_finite({&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0, &q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1});
+  return vertex_face_with<BigInt>(q, CcdPath::gmp);
+}
+
+CcdResult edge_edge_ccd_exact_gmp(const EdgeEdgeQuery& q) {
+  check_finite(
+      {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0, &q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1});
+  return edge_edge_with<BigInt>(q, CcdPath::gmp);
 }
 
 }  // namespace tailor::detail

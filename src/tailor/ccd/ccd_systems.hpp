@@ -18,6 +18,19 @@
 ///   M-U = ((b-a)×(d-a))·m. Parallel, collinear and degenerate segments meet iff an
 ///   endpoint of one lies on the other.
 /// Every branch implies f = 0 (the four points are coplanar).
+///
+/// Projected conditions (what the certified double tier and the exact tier evaluate). At
+/// an instant where the four points are coplanar, every vector above that is a cross
+/// product of two in-plane vectors is normal to the plane, hence parallel to n (VF) or m
+/// (EE) when those are nonzero. So for any axis k with n_k != 0:
+///   sign(E_ab) = sign(n_k) sign(((b-a)×(p-a))_k), and likewise E_bc, E_ca,
+/// i.e. p is in the closed triangle iff the three 2D orientations
+/// ((b-a)×(p-a))_k, ((c-b)×(p-b))_k, ((a-c)×(p-c))_k have n_k's sign or vanish (the
+/// projection along k maps the plane one-to-one). N > 0 iff some n_k != 0; when n = 0 only
+/// the point-on-segment branches remain. For EE with m_k != 0 the projected segments are
+/// not parallel and meet iff ((b-a)×(c-a))_k ((b-a)×(d-a))_k <= 0 and
+/// ((d-c)×(a-c))_k ((d-c)×(b-c))_k <= 0; when m = 0, only endpoint-on-segment branches.
+/// Each k-component is a quadratic in t, which is what makes the exact tier cheap.
 
 #include <array>
 
@@ -88,6 +101,37 @@ EdgeConditions<S> edge_conditions(const V3<S>& a, const V3<S>& b, const V3<S>& c
   const V3<S> m = cross(ba, dc);
   return {dot(m, m), dot(cross(ca, dc), m), dot(cross(b - c, dc), m), dot(cross(ca, ba), m),
           dot(cross(ba, d - a), m)};
+}
+
+/// The k-th component of x × y (a 2D orientation in the plane normal to axis k).
+template <class S>
+S cross_component(const V3<S>& x, const V3<S>& y, int k) {
+  if (k == 0) return x.y * y.z - x.z * y.y;
+  if (k == 1) return x.z * y.x - x.x * y.z;
+  return x.x * y.y - x.y * y.x;
+}
+
+/// The VF vectors of the projected conditions: n and the three edge orientations.
+template <class S>
+struct VfProjection {
+  V3<S> n, e_ab, e_bc, e_ca;
+};
+
+template <class S>
+VfProjection<S> vf_projection(const V3<S>& a, const V3<S>& b, const V3<S>& c, const V3<S>& p) {
+  return {cross(b - a, c - a), cross(b - a, p - a), cross(c - b, p - b), cross(a - c, p - c)};
+}
+
+/// The EE vectors of the projected conditions: m and the four orientations.
+template <class S>
+struct EeProjection {
+  V3<S> m, abc, abd, cda, cdb;
+};
+
+template <class S>
+EeProjection<S> ee_projection(const V3<S>& a, const V3<S>& b, const V3<S>& c, const V3<S>& d) {
+  const V3<S> ba = b - a, dc = d - c;
+  return {cross(ba, dc), cross(ba, c - a), cross(ba, d - a), cross(dc, a - c), cross(dc, b - c)};
 }
 
 /// The coplanarity function det(b-a, c-a, d-a).

@@ -48,7 +48,7 @@ CollisionSet test_pairs_exactly(const TriangleMesh& mesh, const Positions& x0, c
           const Index a = faces(f, 0), b = faces(f, 1), c = faces(f, 2);
           const CcdResult result = vertex_face_ccd({x0.row(v), x0.row(a), x0.row(b), x0.row(c),
                                                     x1.row(v), x1.row(a), x1.row(b), x1.row(c)});
-          out.exact += result.path == CcdPath::exact;
+          out.exact += result.path == CcdPath::exact || result.path == CcdPath::gmp;
           if (result.hit) out.collisions.vertex_face.push_back({v, f, result.toi});
         }
       });
@@ -61,7 +61,7 @@ CollisionSet test_pairs_exactly(const TriangleMesh& mesh, const Positions& x0, c
           const Index c = edges(e2, 0), d = edges(e2, 1);
           const CcdResult result = edge_edge_ccd({x0.row(a), x0.row(b), x0.row(c), x0.row(d),
                                                   x1.row(a), x1.row(b), x1.row(c), x1.row(d)});
-          out.exact += result.path == CcdPath::exact;
+          out.exact += result.path == CcdPath::exact || result.path == CcdPath::gmp;
           if (result.hit) {
             out.collisions.edge_edge.push_back(make_edge_edge(edges, e1, e2, result.toi));
           }

@@ -3,23 +3,84 @@
 #include <gmpxx.h>
 
 #include <array>
+#include <climits>
 #include <stdexcept>
+
+#include "tailor/geometry/fixed_int.hpp"
 
 namespace tailor::detail {
 
 namespace {
 
-using Q3 = std::array<mpq_class, 3>;
-
-Q3 difference(const Vec3& x, const Vec3& y) {
-  Q3 r;
-  for (int k = 0; k < 3; ++k) r[k] = mpq_class(x[k]) - mpq_class(y[k]);
-  return r;
+/// The coefficient `index` (up to its positive factor) from the 18 differences.
+template <class Number, class Vector>
+Number coefficient(int index, const Vector& u0, const Vector& v0, const Vector& w0,
+                   const Vector& u1, const Vector& v1, const Vector& w1) {
+  auto det = [](const Vector& u, const Vector& v,
+                const Vector& w) -> Number {  // a value, not a GMP expression of temporaries
+    return u[0] * (v[1] * w[2] - v[2] * w[1]) + u[1] * (v[2] * w[0] - v[0] * w[2]) +
+           u[2] * (v[0] * w[1] - v[1] * w[0]);
+  };
+  switch (index) {
+    case 0:
+      return det(u0, v0, w0);
+    case 1:
+      return det(u1, v0, w0) + det(u0, v1, w0) + det(u0, v0, w1);
+    case 2:
+      return det(u0, v1, w1) + det(u1, v0, w1) + det(u1, v1, w0);
+    default:
+      return det(u1, v1, w1);
+  }
 }
 
-mpq_class det(const Q3& u, const Q3& v, const Q3& w) {
-  return u[0] * (v[1] * w[2] - v[2] * w[1]) + u[1] * (v[2] * w[0] - v[0] * w[2]) +
-         u[2] * (v[0] * w[1] - v[1] * w[0]);
+/// Exact sign with 2048-bit stack integers: every coordinate times 2^-(lowest exponent)
+/// is an integer, and a common positive scale does not change the sign. Throws
+/// CapacityExceeded when the coordinates span too many bits (products of three
+/// differences must fit).
+int sign_fixed(int index, const std::array<const Vec3*, 8>& x) {
+  using Z = FixedInt<32>;
+  std::uint64_t mantissa[8][3];
+  int exponent[8][3];
+  int lowest = INT_MAX;
+  for (int i = 0; i < 8; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      mantissa[i][k] = 0;
+      exponent[i][k] = 0;
+      const double v = (*x[i])[k];
+      if (v == 0.0) continue;
+      decompose_double(v, mantissa[i][k], exponent[i][k]);
+      lowest = std::min(lowest, exponent[i][k]);
+    }
+  }
+  Z value[8][3];
+  for (int i = 0; i < 8; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      if (mantissa[i][k] != 0) {
+        value[i][k] = Z::scaled(mantissa[i][k], exponent[i][k] - lowest, (*x[i])[k] < 0.0);
+      }
+    }
+  }
+  using V = std::array<Z, 3>;
+  auto difference = [&](int i, int j) {
+    return V{value[i][0] - value[j][0], value[i][1] - value[j][1], value[i][2] - value[j][2]};
+  };
+  const V u0 = difference(1, 0), v0 = difference(2, 0), w0 = difference(3, 0);
+  const V u1 = difference(5, 4), v1 = difference(6, 4), w1 = difference(7, 4);
+  return coefficient<Z>(index, u0, v0, w0, u1, v1, w1).sign();
+}
+
+/// The same in GMP rationals, for spreads beyond the fixed size.
+int sign_rational(int index, const std::array<const Vec3*, 8>& x) {
+  using Q3 = std::array<mpq_class, 3>;
+  auto difference = [&](int i, int j) {
+    Q3 r;
+    for (int k = 0; k < 3; ++k) r[k] = mpq_class((*x[i])[k]) - mpq_class((*x[j])[k]);
+    return r;
+  };
+  const Q3 u0 = difference(1, 0), v0 = difference(2, 0), w0 = difference(3, 0);
+  const Q3 u1 = difference(5, 4), v1 = difference(6, 4), w1 = difference(7, 4);
+  const int s = sgn(coefficient<mpq_class>(index, u0, v0, w0, u1, v1, w1));
+  return (s > 0) - (s < 0);
 }
 
 }  // namespace
@@ -27,28 +88,15 @@ mpq_class det(const Q3& u, const Q3& v, const Q3& w) {
 int coplanarity_coefficient_sign_exact(int index, const Vec3& a_t0, const Vec3& b_t0,
                                        const Vec3& c_t0, const Vec3& d_t0, const Vec3& a_t1,
                                        const Vec3& b_t1, const Vec3& c_t1, const Vec3& d_t1) {
-  for (const Vec3* x : {&a_t0, &b_t0, &c_t0, &d_t0, &a_t1, &b_t1, &c_t1, &d_t1}) {
-    if (!x->allFinite()) throw std::invalid_argument("coplanarity_sign: non-finite coordinate");
+  const std::array<const Vec3*, 8> x{&a_t0, &b_t0, &c_t0, &d_t0, &a_t1, &b_t1, &c_t1, &d_t1};
+  for (const Vec3* p : x) {
+    if (!p->allFinite()) throw std::invalid_argument("coplanarity_sign: non-finite coordinate");
   }
-  const Q3 u0 = difference(b_t0, a_t0), v0 = difference(c_t0, a_t0), w0 = difference(d_t0, a_t0);
-  const Q3 u1 = difference(b_t1, a_t1), v1 = difference(c_t1, a_t1), w1 = difference(d_t1, a_t1);
-  mpq_class value;
-  switch (index) {
-    case 0:
-      value = det(u0, v0, w0);
-      break;
-    case 1:
-      value = det(u1, v0, w0) + det(u0, v1, w0) + det(u0, v0, w1);
-      break;
-    case 2:
-      value = det(u0, v1, w1) + det(u1, v0, w1) + det(u1, v1, w0);
-      break;
-    default:
-      value = det(u1, v1, w1);
-      break;
+  try {
+    return sign_fixed(index, x);
+  } catch (const CapacityExceeded&) {
+    return sign_rational(index, x);
   }
-  const int s = sgn(value);
-  return (s > 0) - (s < 0);
 }
 
 }  // namespace tailor::detail

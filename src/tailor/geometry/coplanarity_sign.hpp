@@ -12,7 +12,10 @@
 /// (equal to A, (2C+F)/3, (2D+E)/3, B of docs/design.md §3). Each is evaluated in double with
 /// the forward error bound 16·2^-53·(the same expression on absolute values), valid when
 /// every nonzero difference lies in [2^-250, 2^250] (no overflow or underflow); otherwise,
-/// or when the bound cannot decide a sign, that sign is computed exactly (GMP).
+/// or when the bound cannot decide a sign, that sign is computed exactly: in 2048-bit
+/// stack integers (geometry/fixed_int.hpp) after a power-of-two scaling, or in GMP
+/// rationals when the coordinates span more bits than a product of three differences can
+/// hold there (a subnormal beside large values).
 
 #include <array>
 #include <cmath>
@@ -32,7 +35,8 @@ enum class StepSign : signed char {
 namespace detail {
 
 /// Exact sign (-1, 0, 1) of the Bernstein coefficient `index` (0..3) of f, up to the
-/// positive factor 3 for indices 1 and 2. Slow path (GMP); defined in the .cpp.
+/// positive factor 3 for indices 1 and 2. Slow path (stack integers, GMP only for extreme
+/// exponent spreads); defined in the .cpp.
 int coplanarity_coefficient_sign_exact(int index, const Vec3& a_t0, const Vec3& b_t0,
                                        const Vec3& c_t0, const Vec3& d_t0, const Vec3& a_t1,
                                        const Vec3& b_t1, const Vec3& c_t1, const Vec3& d_t1);

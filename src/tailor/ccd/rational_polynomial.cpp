@@ -1,4 +1,4 @@
-#include "tailor/ccd/exact_polynomial.hpp"
+#include "tailor/ccd/rational_polynomial.hpp"
 
 #include <algorithm>
 #include <cassert>
@@ -15,65 +15,66 @@ int sign_of(const mpq_class& x) {
 
 }  // namespace
 
-ExactPoly::ExactPoly(const mpq_class& c) : m_c{c} {
+RationalPoly::RationalPoly(const mpq_class& c) : m_c{c} {
   trim();
 }
 
-ExactPoly::ExactPoly(std::vector<mpq_class> coefficients) : m_c(std::move(coefficients)) {
+RationalPoly::RationalPoly(std::vector<mpq_class> coefficients) : m_c(std::move(coefficients)) {
   trim();
 }
 
-ExactPoly ExactPoly::linear(const mpq_class& c0, const mpq_class& c1) {
-  return ExactPoly(std::vector<mpq_class>{c0, c1});
+RationalPoly RationalPoly::linear(const mpq_class& c0, const mpq_class& c1) {
+  return RationalPoly(std::vector<mpq_class>{c0, c1});
 }
 
-void ExactPoly::trim() {
+void RationalPoly::trim() {
   while (!m_c.empty() && sign_of(m_c.back()) == 0) m_c.pop_back();
 }
 
-mpq_class ExactPoly::operator()(const mpq_class& t) const {
+mpq_class RationalPoly::operator()(const mpq_class& t) const {
   mpq_class r = 0;
   for (std::size_t i = m_c.size(); i-- > 0;) r = r * t + m_c[i];
   return r;
 }
 
-int ExactPoly::sign_at(const mpq_class& t) const {
+int RationalPoly::sign_at(const mpq_class& t) const {
   return sign_of((*this)(t));
 }
 
-ExactPoly ExactPoly::derivative() const {
+RationalPoly RationalPoly::derivative() const {
   std::vector<mpq_class> d;
   for (std::size_t i = 1; i < m_c.size(); ++i) d.push_back(m_c[i] * static_cast<long>(i));
-  return ExactPoly(std::move(d));
+  return RationalPoly(std::move(d));
 }
 
-ExactPoly operator+(const ExactPoly& a, const ExactPoly& b) {
+RationalPoly operator+(const RationalPoly& a, const RationalPoly& b) {
   std::vector<mpq_class> c(std::max(a.m_c.size(), b.m_c.size()));
   for (std::size_t i = 0; i < a.m_c.size(); ++i) c[i] += a.m_c[i];
   for (std::size_t i = 0; i < b.m_c.size(); ++i) c[i] += b.m_c[i];
-  return ExactPoly(std::move(c));
+  return RationalPoly(std::move(c));
 }
 
-ExactPoly operator-(const ExactPoly& a, const ExactPoly& b) {
+RationalPoly operator-(const RationalPoly& a, const RationalPoly& b) {
   std::vector<mpq_class> c(std::max(a.m_c.size(), b.m_c.size()));
   for (std::size_t i = 0; i < a.m_c.size(); ++i) c[i] += a.m_c[i];
   for (std::size_t i = 0; i < b.m_c.size(); ++i) c[i] -= b.m_c[i];
-  return ExactPoly(std::move(c));
+  return RationalPoly(std::move(c));
 }
 
-ExactPoly operator*(const ExactPoly& a, const ExactPoly& b) {
+RationalPoly operator*(const RationalPoly& a, const RationalPoly& b) {
   if (a.is_zero() || b.is_zero()) return {};
   std::vector<mpq_class> c(a.m_c.size() + b.m_c.size() - 1);
   for (std::size_t i = 0; i < a.m_c.size(); ++i) {
     for (std::size_t j = 0; j < b.m_c.size(); ++j) c[i + j] += a.m_c[i] * b.m_c[j];
   }
-  return ExactPoly(std::move(c));
+  return RationalPoly(std::move(c));
 }
 
 namespace {
 
 /// Long division: a = q b + r.
-void divide(const ExactPoly& a, const ExactPoly& b, ExactPoly* quotient, ExactPoly* remainder) {
+void divide(const RationalPoly& a, const RationalPoly& b, RationalPoly* quotient,
+            RationalPoly* remainder) {
   assert(!b.is_zero());
   std::vector<mpq_class> r = a.coefficients();
   const auto& bc = b.coefficients();
@@ -85,31 +86,31 @@ void divide(const ExactPoly& a, const ExactPoly& b, ExactPoly* quotient, ExactPo
     q[i - db] = f;
     for (int j = 0; j <= db; ++j) r[i - db + j] -= f * bc[j];
   }
-  if (quotient) *quotient = ExactPoly(std::move(q));
-  if (remainder) *remainder = ExactPoly(std::move(r));
+  if (quotient) *quotient = RationalPoly(std::move(q));
+  if (remainder) *remainder = RationalPoly(std::move(r));
 }
 
-ExactPoly monic(const ExactPoly& p) {
+RationalPoly monic(const RationalPoly& p) {
   if (p.is_zero()) return p;
   std::vector<mpq_class> c = p.coefficients();
   const mpq_class lead = c.back();
   for (auto& x : c) x /= lead;
-  return ExactPoly(std::move(c));
+  return RationalPoly(std::move(c));
 }
 
 /// The Sturm sequence p, p', -rem(...), ... of squarefree p.
-std::vector<ExactPoly> sturm_sequence(const ExactPoly& p) {
-  std::vector<ExactPoly> s{p, p.derivative()};
+std::vector<RationalPoly> sturm_sequence(const RationalPoly& p) {
+  std::vector<RationalPoly> s{p, p.derivative()};
   while (!s.back().is_zero() && s.back().degree() > 0) {
-    ExactPoly r = poly_remainder(s[s.size() - 2], s.back());
+    RationalPoly r = poly_remainder(s[s.size() - 2], s.back());
     if (r.is_zero()) break;
-    s.push_back(ExactPoly() - r);
+    s.push_back(RationalPoly() - r);
   }
   if (s.back().is_zero()) s.pop_back();
   return s;
 }
 
-int sign_variations(const std::vector<ExactPoly>& seq, const mpq_class& x) {
+int sign_variations(const std::vector<RationalPoly>& seq, const mpq_class& x) {
   int count = 0, last = 0;
   for (const auto& q : seq) {
     const int s = q.sign_at(x);
@@ -121,7 +122,7 @@ int sign_variations(const std::vector<ExactPoly>& seq, const mpq_class& x) {
 }
 
 /// A split point of (lo, hi) that is not a root of q (q has finitely many roots).
-mpq_class split_point(const ExactPoly& q, const mpq_class& lo, const mpq_class& hi) {
+mpq_class split_point(const RationalPoly& q, const mpq_class& lo, const mpq_class& hi) {
   const mpq_class w = hi - lo;
   for (unsigned long denom = 2;; denom *= 2) {
     for (unsigned long j = 1; j < denom; j += 2) {
@@ -131,7 +132,7 @@ mpq_class split_point(const ExactPoly& q, const mpq_class& lo, const mpq_class& 
   }
 }
 
-void isolate(const ExactPoly& q, const std::vector<ExactPoly>& sturm, const mpq_class& lo,
+void isolate(const RationalPoly& q, const std::vector<RationalPoly>& sturm, const mpq_class& lo,
              const mpq_class& hi, int vlo, int vhi, std::vector<RealRoot>& out) {
   const int count = vlo - vhi;
   if (count <= 0) return;
@@ -146,7 +147,8 @@ void isolate(const ExactPoly& q, const std::vector<ExactPoly>& sturm, const mpq_
 }
 
 /// Bernstein coefficients of q on [lo, hi].
-std::vector<mpq_class> bernstein_on(const ExactPoly& q, const mpq_class& lo, const mpq_class& hi) {
+std::vector<mpq_class> bernstein_on(const RationalPoly& q, const mpq_class& lo,
+                                    const mpq_class& hi) {
   std::vector<mpq_class> a = q.coefficients();
   const int n = static_cast<int>(a.size()) - 1;
   // Taylor shift to lo: a(t) -> a(lo + s).
@@ -180,37 +182,37 @@ std::vector<mpq_class> bernstein_on(const ExactPoly& q, const mpq_class& lo, con
 
 }  // namespace
 
-ExactPoly poly_remainder(const ExactPoly& a, const ExactPoly& b) {
-  ExactPoly r;
+RationalPoly poly_remainder(const RationalPoly& a, const RationalPoly& b) {
+  RationalPoly r;
   divide(a, b, nullptr, &r);
   return r;
 }
 
-ExactPoly poly_quotient(const ExactPoly& a, const ExactPoly& b) {
-  ExactPoly q;
+RationalPoly poly_quotient(const RationalPoly& a, const RationalPoly& b) {
+  RationalPoly q;
   divide(a, b, &q, nullptr);
   return q;
 }
 
-ExactPoly poly_gcd(const ExactPoly& a, const ExactPoly& b) {
-  ExactPoly x = a, y = b;
+RationalPoly poly_gcd(const RationalPoly& a, const RationalPoly& b) {
+  RationalPoly x = a, y = b;
   while (!y.is_zero()) {
-    ExactPoly r = poly_remainder(x, y);
+    RationalPoly r = poly_remainder(x, y);
     x = std::move(y);
     y = monic(r);
   }
   return monic(x);
 }
 
-ExactPoly squarefree_part(const ExactPoly& p) {
+RationalPoly squarefree_part(const RationalPoly& p) {
   assert(!p.is_zero());
   if (p.degree() <= 0) return p;
-  const ExactPoly g = poly_gcd(p, p.derivative());
+  const RationalPoly g = poly_gcd(p, p.derivative());
   if (g.degree() <= 0) return p;
   return poly_quotient(p, g);
 }
 
-void refine_root(const ExactPoly& p, RealRoot& root) {
+void refine_root(const RationalPoly& p, RealRoot& root) {
   if (root.exact) return;
   mpq_class m = (root.lo + root.hi) / 2;
   const int sm = p.sign_at(m);
@@ -225,15 +227,15 @@ void refine_root(const ExactPoly& p, RealRoot& root) {
   }
 }
 
-std::vector<RealRoot> isolate_roots_unit(const ExactPoly& p) {
+std::vector<RealRoot> isolate_roots_unit(const RationalPoly& p) {
   std::vector<RealRoot> out;
   if (p.degree() <= 0) return out;
   const mpq_class zero = 0, one = 1;
-  ExactPoly q = p;
+  RationalPoly q = p;
   const bool root0 = p.sign_at(zero) == 0;
   const bool root1 = p.sign_at(one) == 0;
-  if (root0) q = poly_quotient(q, ExactPoly::linear(0, 1));
-  if (root1) q = poly_quotient(q, ExactPoly::linear(-1, 1));
+  if (root0) q = poly_quotient(q, RationalPoly::linear(0, 1));
+  if (root1) q = poly_quotient(q, RationalPoly::linear(-1, 1));
   if (root0) out.push_back({zero, zero, true});
   if (q.degree() >= 1) {
     const auto sturm = sturm_sequence(q);
@@ -250,7 +252,7 @@ std::vector<RealRoot> isolate_roots_unit(const ExactPoly& p) {
   return out;
 }
 
-int sign_at_root(const ExactPoly& p, RealRoot& root, const ExactPoly& q) {
+int sign_at_root(const RationalPoly& p, RealRoot& root, const RationalPoly& q) {
   if (root.exact) return q.sign_at(root.lo);
   if (q.degree() <= 0) return q.is_zero() ? 0 : sign_of(q.coefficients()[0]);
   auto constant_sign = [&]() {
@@ -268,7 +270,7 @@ int sign_at_root(const ExactPoly& p, RealRoot& root, const ExactPoly& q) {
     refine_root(p, root);
     if (root.exact) return q.sign_at(root.lo);
   }
-  const ExactPoly g = poly_gcd(p, q);
+  const RationalPoly g = poly_gcd(p, q);
   if (g.degree() >= 1 && g.sign_at(root.lo) * g.sign_at(root.hi) < 0) return 0;
   // q(root) != 0: shrink the interval until q has one strict sign on all of it.
   for (;;) {
@@ -293,17 +295,17 @@ bool holds(int sign, bool strict) {
 
 }  // namespace
 
-mpq_class root_lower_bound(const ExactPoly& p, RealRoot root, const mpq_class& tolerance) {
+mpq_class root_lower_bound(const RationalPoly& p, RealRoot root, const mpq_class& tolerance) {
   while (!root.exact && root.hi - root.lo > tolerance) refine_root(p, root);
   return root.lo;
 }
 
-std::optional<mpq_class> earliest_solution(const ExactPoly& p,
+std::optional<mpq_class> earliest_solution(const RationalPoly& p,
                                            const std::vector<SignCondition>& conditions,
                                            const mpq_class& tolerance) {
   if (!p.is_zero()) {
     if (p.degree() == 0) return std::nullopt;
-    const ExactPoly ps = squarefree_part(p);
+    const RationalPoly ps = squarefree_part(p);
     auto roots = isolate_roots_unit(ps);
     for (auto& r : roots) {
       bool ok = true;
@@ -342,7 +344,7 @@ std::optional<mpq_class> earliest_solution(const ExactPoly& p,
       in_set = in_set && holds(s, c->strict);
       if (right_of) {
         int r = s;
-        for (ExactPoly d = c->poly.derivative(); r == 0 && !d.is_zero(); d = d.derivative()) {
+        for (RationalPoly d = c->poly.derivative(); r == 0 && !d.is_zero(); d = d.derivative()) {
           r = sign_of_poly(d);
         }
         right_of = holds(r, c->strict);
@@ -353,16 +355,16 @@ std::optional<mpq_class> earliest_solution(const ExactPoly& p,
   };
 
   const mpq_class zero(0);
-  if (qualifies([&](const ExactPoly& q) { return q.sign_at(zero); }, false)) return zero;
+  if (qualifies([&](const RationalPoly& q) { return q.sign_at(zero); }, false)) return zero;
   std::optional<mpq_class> best;
   for (const SignCondition* c : moving) {
-    const ExactPoly d = squarefree_part(c->poly);
+    const RationalPoly d = squarefree_part(c->poly);
     for (RealRoot root : isolate_roots_unit(d)) {
       if (root.exact && root.lo == 0) continue;  // done above
       // A candidate can only improve on the best if its interval starts below it.
       if (best && root.lo >= *best) break;
       const bool at_one = root.exact && root.lo == 1;
-      if (qualifies([&](const ExactPoly& q) { return sign_at_root(d, root, q); }, at_one)) {
+      if (qualifies([&](const RationalPoly& q) { return sign_at_root(d, root, q); }, at_one)) {
         const mpq_class lb = root_lower_bound(d, root, tolerance);
         if (!best || lb < *best) best = lb;
         break;  // later roots of this condition are larger

@@ -1,8 +1,8 @@
 #pragma once
 /// @file
 /// Exact univariate polynomials over the rationals (GMP) and the generic decision
-/// procedure of the exact CCD path: "the earliest t in [0, 1] with P(t) = 0 and sign
-/// conditions Q_i(t) >= 0 or > 0". Internal to the ccd module (and its tests).
+/// procedure of the rational reference CCD (ccd_rational.hpp): "the earliest t in [0, 1] with P(t)
+/// = 0 and sign conditions Q_i(t) >= 0 or > 0". Internal to the ccd module (and its tests).
 
 #include <gmpxx.h>
 
@@ -13,15 +13,15 @@ namespace tailor::detail {
 
 /// A polynomial in t with rational coefficients, lowest degree first, no trailing zeros
 /// (the zero polynomial has no coefficients).
-class ExactPoly {
+class RationalPoly {
  public:
-  ExactPoly() = default;
+  RationalPoly() = default;
   /// The constant polynomial `c`.
-  explicit ExactPoly(const mpq_class& c);
+  explicit RationalPoly(const mpq_class& c);
   /// The polynomial with these coefficients (lowest degree first).
-  explicit ExactPoly(std::vector<mpq_class> coefficients);
+  explicit RationalPoly(std::vector<mpq_class> coefficients);
   /// The linear polynomial `c0 + c1 t`.
-  static ExactPoly linear(const mpq_class& c0, const mpq_class& c1);
+  static RationalPoly linear(const mpq_class& c0, const mpq_class& c1);
 
   /// Degree; -1 for the zero polynomial.
   int degree() const { return static_cast<int>(m_c.size()) - 1; }
@@ -34,11 +34,11 @@ class ExactPoly {
   /// Sign (-1, 0, 1) of the value at `t`.
   int sign_at(const mpq_class& t) const;
   /// Derivative.
-  ExactPoly derivative() const;
+  RationalPoly derivative() const;
 
-  friend ExactPoly operator+(const ExactPoly& a, const ExactPoly& b);
-  friend ExactPoly operator-(const ExactPoly& a, const ExactPoly& b);
-  friend ExactPoly operator*(const ExactPoly& a, const ExactPoly& b);
+  friend RationalPoly operator+(const RationalPoly& a, const RationalPoly& b);
+  friend RationalPoly operator-(const RationalPoly& a, const RationalPoly& b);
+  friend RationalPoly operator*(const RationalPoly& a, const RationalPoly& b);
 
  private:
   void trim();
@@ -46,13 +46,13 @@ class ExactPoly {
 };
 
 /// Remainder of `a` divided by nonzero `b`.
-ExactPoly poly_remainder(const ExactPoly& a, const ExactPoly& b);
+RationalPoly poly_remainder(const RationalPoly& a, const RationalPoly& b);
 /// Quotient of `a` divided by nonzero `b` (exact division assumed or not).
-ExactPoly poly_quotient(const ExactPoly& a, const ExactPoly& b);
+RationalPoly poly_quotient(const RationalPoly& a, const RationalPoly& b);
 /// Monic greatest common divisor (zero when both are zero).
-ExactPoly poly_gcd(const ExactPoly& a, const ExactPoly& b);
+RationalPoly poly_gcd(const RationalPoly& a, const RationalPoly& b);
 /// Squarefree part p / gcd(p, p') of a nonzero polynomial.
-ExactPoly squarefree_part(const ExactPoly& p);
+RationalPoly squarefree_part(const RationalPoly& p);
 
 /// A real root of a squarefree polynomial: either exactly `lo` (== `hi`), or the only root
 /// in the open interval (lo, hi), whose endpoints are not roots (the sign changes).
@@ -63,27 +63,27 @@ struct RealRoot {
 
 /// The real roots in [0, 1] of squarefree nonzero `p`, sorted, with disjoint isolating
 /// intervals inside [0, 1].
-std::vector<RealRoot> isolate_roots_unit(const ExactPoly& p);
+std::vector<RealRoot> isolate_roots_unit(const RationalPoly& p);
 
 /// Halves the isolating interval of `root` of squarefree `p` (it may become exact).
-void refine_root(const ExactPoly& p, RealRoot& root);
+void refine_root(const RationalPoly& p, RealRoot& root);
 
 /// Exact sign of `q` at `root` of squarefree `p` (refines the root as needed).
-int sign_at_root(const ExactPoly& p, RealRoot& root, const ExactPoly& q);
+int sign_at_root(const RationalPoly& p, RealRoot& root, const RationalPoly& q);
 
 /// A rational lower bound of `root` of squarefree `p` within `tolerance` of it.
-mpq_class root_lower_bound(const ExactPoly& p, RealRoot root, const mpq_class& tolerance);
+mpq_class root_lower_bound(const RationalPoly& p, RealRoot root, const mpq_class& tolerance);
 
 /// One sign condition `poly > 0` (strict) or `poly >= 0`.
 struct SignCondition {
-  ExactPoly poly;
+  RationalPoly poly;
   bool strict = false;
 };
 
 /// The infimum of {t in [0, 1] : p(t) = 0 and every condition holds} (p may be the zero
 /// polynomial), returned as a rational lower bound within `tolerance` of it; nullopt when
 /// the set is empty.
-std::optional<mpq_class> earliest_solution(const ExactPoly& p,
+std::optional<mpq_class> earliest_solution(const RationalPoly& p,
                                            const std::vector<SignCondition>& conditions,
                                            const mpq_class& tolerance);
 
