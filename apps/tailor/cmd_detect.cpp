@@ -62,6 +62,7 @@ void print_stats(const DetectionStats& s) {
   fmt::print("  generated         {:>10} {:>10}\n", s.vf_generated, s.ee_generated);
   fmt::print("  after boxes       {:>10} {:>10}\n", s.vf_after_boxes, s.ee_after_boxes);
   fmt::print("  after filter      {:>10} {:>10}\n", s.vf_after_filter, s.ee_after_filter);
+  fmt::print("  after projection  {:>10} {:>10}\n", s.vf_after_projection, s.ee_after_projection);
   fmt::print("  exact CCD         {:>10} {:>10}  ({} decided by the exact path)\n", s.vf_tested,
              s.ee_tested, s.ccd_exact_fallbacks);
   fmt::print("  colliding         {:>10} {:>10}\n", s.vf_colliding, s.ee_colliding);

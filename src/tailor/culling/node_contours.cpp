@@ -20,10 +20,9 @@ struct ContourBuilder {
   // Returns the node's boundary half-edges sorted by edge id; `valid` turns false when
   // the patch is not edge-manifold or not consistently oriented.
   std::vector<HalfEdge> build(Index node, bool& valid) {
-    const Bvh& tree = bvh.tree();
     std::vector<HalfEdge> boundary;
-    if (tree.is_leaf(node)) {
-      const Index f = bvh.face(tree.primitive(node));
+    if (bvh.is_leaf(node)) {
+      const Index f = bvh.leaf_face(node);
       const auto edges = mesh.face_edges(f);
       for (int i = 0; i < 3; ++i) {
         if (mesh.edge_faces(edges[i]).size() > 2) valid = false;  // non-manifold edge
@@ -33,8 +32,8 @@ struct ContourBuilder {
                 [](const HalfEdge& a, const HalfEdge& b) { return a.edge < b.edge; });
     } else {
       bool left_valid = true, right_valid = true;
-      std::vector<HalfEdge> left = build(tree.left(node), left_valid);
-      std::vector<HalfEdge> right = build(tree.right(node), right_valid);
+      std::vector<HalfEdge> left = build(bvh.left(node), left_valid);
+      std::vector<HalfEdge> right = build(bvh.right(node), right_valid);
       valid = left_valid && right_valid;
       boundary.reserve(left.size() + right.size());
       // Merge; an edge on both sides is interior now, and must be traversed in opposite
@@ -53,7 +52,7 @@ struct ContourBuilder {
     }
     // Leaves are never tested (a triangle cannot touch itself): no loop stored.
     offsets[node] = static_cast<std::int64_t>(vertices.size());
-    if (!tree.is_leaf(node) && valid) record_loop(node, boundary);
+    if (!bvh.is_leaf(node) && valid) record_loop(node, boundary);
     return boundary;
   }
 
@@ -89,7 +88,7 @@ struct ContourBuilder {
 }  // namespace
 
 NodeContours::NodeContours(const TriangleMesh& mesh, const MeshBvh& bvh) {
-  const Index n = bvh.tree().num_nodes();
+  const Index n = bvh.num_nodes();
   m_loop_offset.assign(n, 0);
   m_loop_length.assign(n, 0);
   if (n == 0) return;
