@@ -73,8 +73,8 @@ void print_stats(const DetectionStats& s) {
 }
 
 int run_detect(const DetectArgs& args) {
-  const MeshData t0 = read_mesh(args.mesh_t0);
-  const MeshData t1 = read_mesh(args.mesh_t1);
+  MeshData t0 = read_mesh(args.mesh_t0);
+  MeshData t1 = read_mesh(args.mesh_t1);
   if (t0.vertices.rows() != t1.vertices.rows() || t0.faces != t1.faces) {
     throw InputError(fmt::format(
         "{} and {} do not have the same topology ({} vs {} vertices, "
@@ -82,7 +82,9 @@ int run_detect(const DetectArgs& args) {
         args.mesh_t0, args.mesh_t1, t0.vertices.rows(), t1.vertices.rows(), t0.faces.rows(),
         t1.faces.rows(), t0.faces.rows() == t1.faces.rows() ? ", different faces" : ""));
   }
-  const TriangleMesh mesh(static_cast<Index>(t0.vertices.rows()), t0.faces);
+  // The topology keeps the faces: no other copy is needed.
+  t1.faces.resize(0, 3);
+  const TriangleMesh mesh(static_cast<Index>(t0.vertices.rows()), std::move(t0.faces));
   fmt::print("mesh       : {} vertices, {} faces, {} edges\n", mesh.num_vertices(),
              mesh.num_faces(), mesh.num_edges());
 

@@ -55,6 +55,11 @@ class MeshBvh {
   const NormalCone& cone(Index node) const {
     return m_cone_slot[node] >= 0 ? m_cones[m_cone_slot[node]] : kWide;
   }
+  /// Whether a node keeps a cone (the others report wide()), and its index among the
+  /// num_cones() nodes that do.
+  bool has_cone(Index node) const { return m_cone_slot[node] >= 0; }
+  Index cone_index(Index node) const { return m_cone_slot[node]; }
+  Index num_cones() const { return static_cast<Index>(m_cones.size()); }
   /// The faces the tree was built over, in the order given.
   const std::vector<Index>& faces() const { return m_faces; }
 

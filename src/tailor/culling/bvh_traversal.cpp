@@ -56,7 +56,7 @@ class CandidateTraversal::Walk {
       Index f = a.leaf_face(node_a), g = b.leaf_face(node_b);
       if (m_options.adjacency_culling && m_mesh.faces_share_vertex(f, g)) return;
       if (f > g) std::swap(f, g);
-      out.pairs.push_back({f, g});
+      out.push({f, g});
       return;
     }
     const Index size_a = a.size(node_a), size_b = b.size(node_b);
@@ -90,7 +90,8 @@ TraversalCounts& TraversalCounts::operator+=(const TraversalCounts& other) {
 
 void CandidateTraversal::clear() {
   for (ThreadOutput& out : m_outputs) {
-    out.pairs.clear();
+    for (std::size_t b = 0; b < out.used; ++b) out.blocks[b].clear();
+    out.used = 0;
     out.counts = {};
   }
 }
@@ -109,14 +110,17 @@ void CandidateTraversal::pair(const MeshBvh& a, const MeshBvh& b, const Traversa
 std::vector<std::span<const TrianglePair>> CandidateTraversal::blocks() const {
   std::vector<std::span<const TrianglePair>> result;
   for (const ThreadOutput& out : m_outputs) {
-    if (!out.pairs.empty()) result.emplace_back(out.pairs);
+    for (std::size_t b = 0; b < out.used; ++b) result.emplace_back(out.blocks[b]);
   }
   return result;
 }
 
 std::int64_t CandidateTraversal::size() const {
   std::int64_t total = 0;
-  for (const ThreadOutput& out : m_outputs) total += static_cast<std::int64_t>(out.pairs.size());
+  for (const ThreadOutput& out : m_outputs) {
+    for (std::size_t b = 0; b < out.used; ++b)
+      total += static_cast<std::int64_t>(out.blocks[b].size());
+  }
   return total;
 }
 

@@ -38,8 +38,9 @@ struct StepPositions {
 };
 
 /// Collects the candidate triangle pairs (CTPs) of a step from any number of self- and
-/// pair-traversals. The pairs stay in per-thread blocks that keep their memory from step
-/// to step (no allocation once warm) and are read block by block.
+/// pair-traversals. The pairs stay in per-thread lists of fixed-size blocks that keep
+/// their memory from step to step (no allocation once warm, no copy on growth, at most
+/// one partly filled block per thread) and are read block by block.
 class CandidateTraversal {
  public:
   explicit CandidateTraversal(const TriangleMesh& mesh) : m_mesh(&mesh) {}
@@ -64,9 +65,19 @@ class CandidateTraversal {
   TraversalCounts counts() const;
 
  private:
+  // Pairs per block (256 KiB).
+  static constexpr std::size_t kBlockPairs = std::size_t{1} << 15;
   struct ThreadOutput {
-    std::vector<TrianglePair> pairs;
+    std::vector<std::vector<TrianglePair>> blocks;  // reserved to kBlockPairs each
+    std::size_t used = 0;                           // blocks in use (the last may be partial)
     TraversalCounts counts;
+    void push(TrianglePair pair) {
+      if (used == 0 || blocks[used - 1].size() == kBlockPairs) {
+        if (used == blocks.size()) blocks.emplace_back().reserve(kBlockPairs);
+        ++used;
+      }
+      blocks[used - 1].push_back(pair);
+    }
   };
   class Walk;
 

@@ -73,16 +73,24 @@ void ExactPairTester::test(const TriangleMesh& mesh, const Positions& x0, const 
       });
 }
 
-CollisionSet ExactPairTester::collisions() const {
+CollisionSet ExactPairTester::take_collisions() {
+  // Append into the largest buffer, moved out; the others are released.
   CollisionSet all;
-  for (const ThreadOutput& out : m_outputs) {
-    all.vertex_face.insert(all.vertex_face.end(), out.collisions.vertex_face.begin(),
-                           out.collisions.vertex_face.end());
-    all.edge_edge.insert(all.edge_edge.end(), out.collisions.edge_edge.begin(),
-                         out.collisions.edge_edge.end());
-  }
-  sort_unique(all.vertex_face);
-  sort_unique(all.edge_edge);
+  auto gather = [&](auto member) {
+    auto& result = all.*member;
+    for (ThreadOutput& out : m_outputs) {
+      auto& mine = out.collisions.*member;
+      if (mine.size() > result.size()) std::swap(mine, result);
+    }
+    for (ThreadOutput& out : m_outputs) {
+      auto& mine = out.collisions.*member;
+      result.insert(result.end(), mine.begin(), mine.end());
+      std::remove_reference_t<decltype(mine)>().swap(mine);
+    }
+    sort_unique(result);
+  };
+  gather(&CollisionSet::vertex_face);
+  gather(&CollisionSet::edge_edge);
   return all;
 }
 
@@ -99,7 +107,7 @@ CollisionSet test_pairs_exactly(const TriangleMesh& mesh, const Positions& x0, c
   ExactPairTester tester;
   tester.test(mesh, x0, x1, vertex_face, edge_edge);
   if (exact_fallbacks != nullptr) *exact_fallbacks = tester.exact_fallbacks();
-  return tester.collisions();
+  return tester.take_collisions();
 }
 
 }  // namespace tailor

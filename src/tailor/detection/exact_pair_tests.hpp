@@ -23,9 +23,10 @@ class ExactPairTester {
   /// Tests every pair of one batch (parallel); may be called any number of times a step.
   void test(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
             std::span<const VertexFacePair> vertex_face, std::span<const EdgeEdgePair> edge_edge);
-  /// The collisions since begin_step(), sorted and without duplicates, so the result does
-  /// not depend on the batches, their order or the thread count.
-  CollisionSet collisions() const;
+  /// Hands over the collisions since begin_step(), sorted and without duplicates, so the
+  /// result does not depend on the batches, their order or the thread count. The
+  /// per-thread buffers are moved into the result (it is the step's output), not copied.
+  CollisionSet take_collisions();
   /// Queries since begin_step() that the exact path decided.
   std::int64_t exact_fallbacks() const;
 

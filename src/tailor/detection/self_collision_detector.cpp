@@ -176,7 +176,7 @@ struct SelfCollisionDetector::Impl {
 
       low_level_and_ccd(x0, x1, stats);
       const auto gather = Clock::now();
-      result.collisions = tester.collisions();
+      result.collisions = tester.take_collisions();
       stats.ccd_ms += elapsed_ms(gather);
       stats.vf_colliding = static_cast<std::int64_t>(result.collisions.vertex_face.size());
       stats.ee_colliding = static_cast<std::int64_t>(result.collisions.edge_edge.size());
