@@ -58,7 +58,9 @@ struct PairFilters {
 
 /// The verdict of the enabled filters for vertex `p` against the closed triangle `abc`,
 /// every point moving linearly from its t0 to its t1 position. The coplanarity cubic is
-/// evaluated once for both filters.
+/// evaluated once for both filters; the tests run cheapest first: the DNF's certified
+/// double signs, the projection filter, and only then the DNF's exact evaluation (so a
+/// pair that both would cull is reported apart_in_projection).
 PairVerdict vertex_face_verdict(const Vec3& p_t0, const Vec3& a_t0, const Vec3& b_t0,
                                 const Vec3& c_t0, const Vec3& p_t1, const Vec3& a_t1,
                                 const Vec3& b_t1, const Vec3& c_t1, PairFilters filters);
