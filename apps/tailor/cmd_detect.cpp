@@ -48,6 +48,7 @@ void print_stats(const DetectionStats& s) {
   fmt::print("  generated         {:>10} {:>10}\n", s.vf_generated, s.ee_generated);
   fmt::print("  after boxes       {:>10} {:>10}\n", s.vf_after_boxes, s.ee_after_boxes);
   fmt::print("  after filter      {:>10} {:>10}\n", s.vf_after_filter, s.ee_after_filter);
+  fmt::print("  after projection  {:>10} {:>10}\n", s.vf_after_projection, s.ee_after_projection);
   fmt::print("  exact CCD         {:>10} {:>10}  ({} decided by the exact path)\n", s.vf_tested,
              s.ee_tested, s.ccd_exact_fallbacks);
   fmt::print("  colliding         {:>10} {:>10}\n", s.vf_colliding, s.ee_colliding);
@@ -95,8 +96,8 @@ void dump_queries(const std::string& prefix, const TriangleMesh& mesh, const Pos
 }
 
 int run_detect(const DetectArgs& args) {
-  const MeshData t0 = read_mesh(args.mesh_t0);
-  const MeshData t1 = read_mesh(args.mesh_t1);
+  MeshData t0 = read_mesh(args.mesh_t0);
+  MeshData t1 = read_mesh(args.mesh_t1);
   if (t0.vertices.rows() != t1.vertices.rows() || t0.faces != t1.faces) {
     throw InputError(fmt::format(
         "{} and {} do not have the same topology ({} vs {} vertices, "
@@ -104,7 +105,9 @@ int run_detect(const DetectArgs& args) {
         args.mesh_t0, args.mesh_t1, t0.vertices.rows(), t1.vertices.rows(), t0.faces.rows(),
         t1.faces.rows(), t0.faces.rows() == t1.faces.rows() ? ", different faces" : ""));
   }
-  const TriangleMesh mesh(static_cast<Index>(t0.vertices.rows()), t0.faces);
+  // The topology keeps the faces: no other copy is needed.
+  t1.faces.resize(0, 3);
+  const TriangleMesh mesh(static_cast<Index>(t0.vertices.rows()), std::move(t0.faces));
   fmt::print("mesh       : {} vertices, {} faces, {} edges\n", mesh.num_vertices(),
              mesh.num_faces(), mesh.num_edges());
 

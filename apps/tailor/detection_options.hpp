@@ -15,7 +15,7 @@ namespace tailor::cli {
 struct DetectionOptions {
   std::string method = "paper";
   std::optional<bool> normal_cones, contour_test, adjacency_culling, feature_assignment,
-      primitive_boxes, coplanarity_filter, radial_view;
+      primitive_boxes, coplanarity_filter, projection_filter, radial_view;
   int threads = 0;
 
   /// Adds `--method`, `--threads` and `--cones/--no-cones`-style switches to `command`.
@@ -32,6 +32,7 @@ struct DetectionOptions {
     add_switch(command, "assignment", feature_assignment, "feature assignment");
     add_switch(command, "primitive-boxes", primitive_boxes, "primitive bounding boxes");
     add_switch(command, "filter", coplanarity_filter, "non-coplanarity filter");
+    add_switch(command, "projection", projection_filter, "projection filter");
     add_switch(command, "radial", radial_view, "radial-view culling");
   }
 
@@ -47,6 +48,7 @@ struct DetectionOptions {
     apply(config.feature_assignment, feature_assignment);
     apply(config.primitive_boxes, primitive_boxes);
     apply(config.coplanarity_filter, coplanarity_filter);
+    apply(config.projection_filter, projection_filter);
     apply(config.radial_view, radial_view);
     config.threads = threads;
     return config;

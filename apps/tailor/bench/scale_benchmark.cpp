@@ -1,28 +1,42 @@
 #include "bench/scale_benchmark.hpp"
 
 #include <fmt/format.h>
+#include <malloc.h>
+#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <memory>
 #include <numbers>
 
-#include "tailor/bvh/mesh_bvh.hpp"
+#include "tailor/bvh/aabb.hpp"
 #include "tailor/detection/self_collision_detector.hpp"
+#include "tailor/geometry/error.hpp"
 #include "tailor/mesh/procedural_meshes.hpp"
+#include "tailor/mesh/procedural_steps.hpp"
 
 namespace tailor {
 namespace {
 
-double peak_resident_mib() {
+// A field of /proc/self/status in kB ("VmHWM:", "VmRSS:"), in bytes.
+double status_bytes(const std::string& field) {
   std::ifstream status("/proc/self/status");
   std::string line;
   while (std::getline(status, line)) {
-    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+    if (line.rfind(field, 0) == 0) return std::stod(line.substr(field.size())) * 1024.0;
   }
   return 0;
+}
+
+// Returns freed memory to the system and restarts the peak at the current resident size
+// (Linux: writing 5 to clear_refs); returns that size.
+double reset_peak() {
+  malloc_trim(0);
+  std::ofstream("/proc/self/clear_refs") << "5";
+  return status_bytes("VmRSS:");
 }
 
 double median(std::vector<double> values) {
@@ -31,7 +45,7 @@ double median(std::vector<double> values) {
 }
 
 struct ScaleScene {
-  MeshData mesh;
+  MeshData mesh;  // vertices = x0
   Positions x1;
   std::vector<std::vector<Index>> section_loops;
 };
@@ -43,6 +57,15 @@ ScaleScene crumpling_cloth_scene(Index triangles) {
   const Positions rest = scene.mesh.vertices;
   scene.mesh.vertices = crumpling_cloth(rest, 0.5);
   scene.x1 = crumpling_cloth(rest, 0.51);
+  return scene;
+}
+
+ScaleScene folded_cloth_scene(Index triangles) {
+  ProceduralStep step = make_folded_cloth_on_sphere(triangles);
+  ScaleScene scene;
+  scene.mesh.vertices = std::move(step.x0);
+  scene.mesh.faces = std::move(step.faces);
+  scene.x1 = std::move(step.x1);
   return scene;
 }
 
@@ -76,56 +99,105 @@ ScaleScene sleeve_scene(Index triangles) {
   return scene;
 }
 
+ScaleScene make_scene(const std::string& name, Index triangles) {
+  if (name == "cloth") return crumpling_cloth_scene(triangles);
+  if (name == "folded") return folded_cloth_scene(triangles);
+  return sleeve_scene(triangles);
+}
+
+// The floor: every face's swept box from x0 and x1, in parallel on the arena's threads.
+double floor_ms(const FaceArray& faces, const Positions& x0, const Positions& x1,
+                std::vector<Aabb>& boxes, tbb::task_arena& arena) {
+  const auto start = std::chrono::steady_clock::now();
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(faces.rows()), 4096),
+                      [&](const tbb::blocked_range<Index>& range) {
+                        for (Index f = range.begin(); f < range.end(); ++f) {
+                          boxes[f] = swept_box(x0, x1, {faces(f, 0), faces(f, 1), faces(f, 2)});
+                        }
+                      });
+  });
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+ScaleRow measure(const std::string& name, const ScaleScene& scene, int threads, int repetitions) {
+  ScaleRow row;
+  row.scene = name;
+  row.threads = threads;
+  const double resident_before = reset_peak();
+  {
+    const TriangleMesh mesh(static_cast<Index>(scene.mesh.vertices.rows()), scene.mesh.faces);
+    row.triangles = mesh.num_faces();
+    DetectionConfig config = DetectionConfig::preset("paper");
+    config.threads = threads;
+    SelfCollisionDetector detector(mesh, scene.mesh.vertices, config, scene.section_loops);
+    detector.detect(scene.mesh.vertices, scene.x1);  // warm-up: buffers reach their size
+    std::vector<double> refit, traversal, low, ccd, total;
+    DetectionStats stats;
+    for (int r = 0; r < repetitions; ++r) {
+      stats = detector.detect(scene.mesh.vertices, scene.x1).stats;
+      refit.push_back(stats.refit_ms), traversal.push_back(stats.traversal_ms);
+      low.push_back(stats.pair_generation_ms), ccd.push_back(stats.ccd_ms);
+      total.push_back(stats.total_ms);
+    }
+    row.bytes_per_triangle = (status_bytes("VmHWM:") - resident_before) / row.triangles;
+    row.refit_ms = median(refit), row.traversal_ms = median(traversal);
+    row.low_level_ms = median(low), row.ccd_ms = median(ccd), row.total_ms = median(total);
+    row.ctps = stats.candidate_triangle_pairs;
+    row.vf = stats.vf_tested, row.ee = stats.ee_tested;
+    row.collisions = stats.vf_colliding + stats.ee_colliding;
+  }
+  std::vector<Aabb> boxes(static_cast<std::size_t>(row.triangles));
+  tbb::task_arena arena(threads);
+  floor_ms(scene.mesh.faces, scene.mesh.vertices, scene.x1, boxes, arena);  // warm-up
+  std::vector<double> floor;
+  for (int r = 0; r < repetitions; ++r) {
+    floor.push_back(floor_ms(scene.mesh.faces, scene.mesh.vertices, scene.x1, boxes, arena));
+  }
+  row.floor_ms = median(floor);
+  row.peak_mib = status_bytes("VmHWM:") / (1024.0 * 1024.0);
+  return row;
+}
+
+std::string with_commas(std::int64_t value) {
+  std::string digits = std::to_string(value < 0 ? -value : value), out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return value < 0 ? "-" + out : out;
+}
+
 }  // namespace
 
+std::vector<std::string> scale_scene_names() {
+  return {"cloth", "folded", "sleeve"};
+}
+
 std::vector<ScaleRow> run_scale_benchmark(const ScaleOptions& options) {
-  using Clock = std::chrono::steady_clock;
-  std::vector<ScaleRow> rows;
+  const std::vector<std::string> known = scale_scene_names();
+  for (const std::string& name : options.scenes) {
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+      throw InputError(
+          fmt::format("unknown scale scene '{}' (expected cloth, folded, sleeve)", name));
+    }
+  }
   std::vector<Index> sizes;
-  for (double t = 1000; t <= options.max_triangles * 1.0001; t *= std::sqrt(10.0)) {
+  for (double t = options.min_triangles; t <= options.max_triangles * 1.0001;
+       t *= std::sqrt(10.0)) {
     sizes.push_back(static_cast<Index>(std::lround(t)));
   }
-  for (const std::string name : {"cloth", "sleeve"}) {
+  std::vector<ScaleRow> rows;
+  for (const std::string& name : options.scenes) {
     for (Index target : sizes) {
-      const ScaleScene scene =
-          name == "cloth" ? crumpling_cloth_scene(target) : sleeve_scene(target);
-      const TriangleMesh mesh(static_cast<Index>(scene.mesh.vertices.rows()), scene.mesh.faces);
-      for (int threads : {1, 2}) {
+      const ScaleScene scene = make_scene(name, target);
+      for (int threads : options.threads) {
         if (options.progress) {
-          options.progress(fmt::format("{} {} triangles, {} thread{}", name, mesh.num_faces(),
-                                       threads, threads > 1 ? "s" : ""));
+          options.progress(fmt::format("{} {} triangles, {} thread{}", name,
+                                       scene.mesh.faces.rows(), threads, threads > 1 ? "s" : ""));
         }
-        ScaleRow row;
-        row.scene = name;
-        row.threads = threads;
-        row.triangles = mesh.num_faces();
-        DetectionConfig config = DetectionConfig::preset("paper");
-        config.threads = threads;
-        SelfCollisionDetector detector(mesh, scene.mesh.vertices, config, scene.section_loops);
-        detector.detect(scene.mesh.vertices, scene.x1);  // warm-up
-        std::vector<double> refit, traversal, low, ccd, total, floor;
-        DetectionStats stats;
-        for (int r = 0; r < options.repetitions; ++r) {
-          stats = detector.detect(scene.mesh.vertices, scene.x1).stats;
-          refit.push_back(stats.refit_ms), traversal.push_back(stats.traversal_ms);
-          low.push_back(stats.pair_generation_ms), ccd.push_back(stats.ccd_ms);
-          total.push_back(stats.total_ms);
-        }
-        MeshBvh bvh(mesh, scene.mesh.vertices);
-        tbb::task_arena arena(threads);
-        for (int r = 0; r < options.repetitions; ++r) {
-          const auto start = Clock::now();
-          arena.execute([&] { bvh.refit(scene.mesh.vertices, scene.x1, true); });
-          floor.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-        }
-        row.floor_ms = median(floor);
-        row.refit_ms = median(refit), row.traversal_ms = median(traversal);
-        row.low_level_ms = median(low), row.ccd_ms = median(ccd), row.total_ms = median(total);
-        row.ctps = stats.candidate_triangle_pairs;
-        row.vf = stats.vf_tested, row.ee = stats.ee_tested;
-        row.collisions = stats.vf_colliding + stats.ee_colliding;
-        row.peak_mib = peak_resident_mib();
-        rows.push_back(row);
+        rows.push_back(measure(name, scene, threads, options.repetitions));
       }
     }
   }
@@ -135,14 +207,32 @@ std::vector<ScaleRow> run_scale_benchmark(const ScaleOptions& options) {
 std::string scale_csv(const std::vector<ScaleRow>& rows) {
   std::string csv =
       "scene,threads,triangles,floor_ms,refit_ms,traversal_ms,low_level_ms,ccd_ms,total_ms,"
-      "ctps,vf,ee,collisions,peak_mib\n";
+      "ctps,vf,ee,collisions,pairs_per_collision,bytes_per_triangle,peak_mib\n";
   for (const ScaleRow& r : rows) {
-    csv += fmt::format("{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{},{},{},{},{:.1f}\n",
-                       r.scene, r.threads, r.triangles, r.floor_ms, r.refit_ms, r.traversal_ms,
-                       r.low_level_ms, r.ccd_ms, r.total_ms, r.ctps, r.vf, r.ee, r.collisions,
-                       r.peak_mib);
+    csv += fmt::format(
+        "{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{},{},{},{},{:.3f},{:.1f},{:.1f}\n",
+        r.scene, r.threads, r.triangles, r.floor_ms, r.refit_ms, r.traversal_ms, r.low_level_ms,
+        r.ccd_ms, r.total_ms, r.ctps, r.vf, r.ee, r.collisions, r.pairs_per_collision(),
+        r.bytes_per_triangle, r.peak_mib);
   }
   return csv;
+}
+
+std::string scale_markdown(const std::vector<ScaleRow>& rows) {
+  std::string md =
+      "| scene | threads | triangles | floor | refit | traversal | low level | exact CCD | "
+      "total | all but CCD | CTPs | to CCD | collisions | pairs/collision | B/triangle |\n"
+      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const ScaleRow& r : rows) {
+    md += fmt::format(
+        "| {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {} | {} | "
+        "{} | {:.2f} | {:.0f} |\n",
+        r.scene, r.threads, with_commas(r.triangles), r.floor_ms, r.refit_ms, r.traversal_ms,
+        r.low_level_ms, r.ccd_ms, r.total_ms, r.total_ms - r.ccd_ms, with_commas(r.ctps),
+        with_commas(r.vf + r.ee), with_commas(r.collisions), r.pairs_per_collision(),
+        r.bytes_per_triangle);
+  }
+  return md;
 }
 
 LinePlot scale_plot(const std::vector<ScaleRow>& rows) {
@@ -151,19 +241,23 @@ LinePlot scale_plot(const std::vector<ScaleRow>& rows) {
   plot.x_label = "triangles";
   plot.y_label = "milliseconds";
   plot.log_x = plot.log_y = true;
-  for (const std::string scene : {"cloth", "sleeve"}) {
-    for (int threads : {1, 2}) {
-      PlotSeries total, floor;
-      total.name = fmt::format("{} {}T step", scene, threads);
-      floor.name = fmt::format("{} {}T refit", scene, threads);
-      for (const ScaleRow& r : rows) {
-        if (r.scene != scene || r.threads != threads) continue;
-        total.x.push_back(r.triangles), total.y.push_back(r.total_ms);
-        floor.x.push_back(r.triangles), floor.y.push_back(r.floor_ms);
-      }
-      plot.series.push_back(std::move(total));
-      plot.series.push_back(std::move(floor));
+  std::vector<std::pair<std::string, int>> series;
+  for (const ScaleRow& r : rows) {
+    if (std::find(series.begin(), series.end(), std::pair{r.scene, r.threads}) == series.end()) {
+      series.emplace_back(r.scene, r.threads);
     }
+  }
+  for (const auto& [scene, threads] : series) {
+    PlotSeries total, floor;
+    total.name = fmt::format("{} {}T step", scene, threads);
+    floor.name = fmt::format("{} {}T floor", scene, threads);
+    for (const ScaleRow& r : rows) {
+      if (r.scene != scene || r.threads != threads) continue;
+      total.x.push_back(r.triangles), total.y.push_back(r.total_ms);
+      floor.x.push_back(r.triangles), floor.y.push_back(r.floor_ms);
+    }
+    plot.series.push_back(std::move(total));
+    plot.series.push_back(std::move(floor));
   }
   return plot;
 }

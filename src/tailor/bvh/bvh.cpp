@@ -1,60 +1,36 @@
 #include "tailor/bvh/bvh.hpp"
 
-#include <algorithm>
-#include <numeric>
+#include "tailor/bvh/bvh_layout.hpp"
 
 namespace tailor {
+
 Bvh::Bvh(std::span<const Aabb> primitive_boxes) {
   const Index n = static_cast<Index>(primitive_boxes.size());
   if (n == 0) return;
-  const Index num_nodes = 2 * n - 1;
+  std::vector<Vec3> centers(static_cast<std::size_t>(n));
+  for (Index p = 0; p < n; ++p) centers[p] = primitive_boxes[p].center();
+  BvhLayout layout = build_median_split_layout(centers);
+  const Index num_nodes = layout.num_nodes();
   m_left.assign(num_nodes, -1);
-  m_right.assign(num_nodes, -1);
+  m_right = std::move(layout.right);
+  m_count = std::move(layout.count);
   m_parent.assign(num_nodes, -1);
   m_first.assign(num_nodes, 0);
-  m_count.assign(num_nodes, 0);
   m_boxes.resize(num_nodes);
   m_leaf_of_primitive.assign(n, -1);
   m_primitive_order.resize(n);
-  std::iota(m_primitive_order.begin(), m_primitive_order.end(), 0);
-
-  std::vector<Vec3> centers(n);
-  for (Index p = 0; p < n; ++p) centers[p] = primitive_boxes[p].center();
-
-  // Top-down median split in pre-order; an explicit stack keeps deep trees off the call stack.
-  struct Task {
-    Index node, first, count, parent;
-  };
-  std::vector<Task> stack{{0, 0, n, -1}};
-  while (!stack.empty()) {
-    const Task task = stack.back();
-    stack.pop_back();
-    m_first[task.node] = task.first;
-    m_count[task.node] = task.count;
-    m_parent[task.node] = task.parent;
-    const auto begin = m_primitive_order.begin() + task.first;
-    if (task.count == 1) {
-      m_right[task.node] = *begin;
-      m_leaf_of_primitive[*begin] = task.node;
+  // Parents precede children, so first offsets and parents fill in one forward pass.
+  for (Index node = 0; node < num_nodes; ++node) {
+    if (m_count[node] == 1) {
+      m_primitive_order[m_first[node]] = m_right[node];
+      m_leaf_of_primitive[m_right[node]] = node;
       continue;
     }
-    Aabb center_box;
-    for (Index i = 0; i < task.count; ++i) center_box.extend(centers[begin[i]]);
-    int axis = 0;
-    (center_box.max - center_box.min).maxCoeff(&axis);
-    const Index half = task.count / 2;
-    // Ties broken by id so the tree depends only on the input.
-    std::nth_element(begin, begin + half, begin + task.count, [&](Index a, Index b) {
-      return centers[a][axis] < centers[b][axis] || (centers[a][axis] == centers[b][axis] && a < b);
-    });
-    // Pre-order numbering: the left subtree (2*half-1 nodes) follows its parent, the
-    // right subtree follows the whole left subtree.
-    const Index left = task.node + 1;
-    const Index right = task.node + 2 * half;
-    m_left[task.node] = left;
-    m_right[task.node] = right;
-    stack.push_back({right, task.first + half, task.count - half, task.node});
-    stack.push_back({left, task.first, half, task.node});
+    const Index left = node + 1, right = m_right[node];
+    m_left[node] = left;
+    m_parent[left] = m_parent[right] = node;
+    m_first[left] = m_first[node];
+    m_first[right] = m_first[node] + m_count[left];
   }
   refit(primitive_boxes);
 }

@@ -18,7 +18,7 @@ namespace tailor {
 class Bvh {
  public:
   Bvh() = default;
-  /// Builds the tree top-down (median split of box centres along the widest axis).
+  /// Builds the tree top-down (build_median_split_layout on the box centres).
   explicit Bvh(std::span<const Aabb> primitive_boxes);
 
   Index num_nodes() const { return static_cast<Index>(m_left.size()); }

@@ -1,5 +1,7 @@
 #include "tailor/candidates/feature_assignment.hpp"
 
+#include <bit>
+
 #include "tailor/candidates/isolated_set.hpp"
 
 namespace tailor {
@@ -8,18 +10,36 @@ FeatureAssignment::FeatureAssignment(const TriangleMesh& mesh)
     : m_mesh(&mesh),
       m_vertex_owner(static_cast<std::size_t>(mesh.num_vertices()), -1),
       m_edge_owner(static_cast<std::size_t>(mesh.num_edges()), -1),
-      m_vertex_count(static_cast<std::size_t>(mesh.num_faces()), 0),
-      m_edge_count(static_cast<std::size_t>(mesh.num_faces()), 0) {
+      m_owned(static_cast<std::size_t>(mesh.num_faces()), 0),
+      m_owner_others(static_cast<std::size_t>(mesh.num_vertices()), {-1, -1}),
+      m_owner_opposite(static_cast<std::size_t>(mesh.num_edges()), -1) {
   // Greedy in face order: each face takes its features that no earlier face took.
+  const FaceArray& faces = mesh.faces();
   for (Index f = 0; f < mesh.num_faces(); ++f) {
     const auto edges = mesh.face_edges(f);
     for (int k = 0; k < 3; ++k) {
-      Index& vertex_owner = m_vertex_owner[mesh.faces()(f, k)];
-      if (vertex_owner < 0) vertex_owner = f, ++m_vertex_count[f];
-      Index& edge_owner = m_edge_owner[edges[k]];
-      if (edge_owner < 0) edge_owner = f, ++m_edge_count[f];
+      const Index v = faces(f, k);
+      if (m_vertex_owner[v] < 0) {
+        m_vertex_owner[v] = f;
+        m_owned[f] |= static_cast<std::uint8_t>(1u << k);
+        m_owner_others[v] = {faces(f, (k + 1) % 3), faces(f, (k + 2) % 3)};
+      }
+      // Edge k joins corners k and k+1; the opposite corner is k+2.
+      if (m_edge_owner[edges[k]] < 0) {
+        m_edge_owner[edges[k]] = f;
+        m_owned[f] |= static_cast<std::uint8_t>(1u << (3 + k));
+        m_owner_opposite[edges[k]] = faces(f, (k + 2) % 3);
+      }
     }
   }
+}
+
+int FeatureAssignment::vertices_assigned(Index f) const {
+  return std::popcount(static_cast<unsigned>(m_owned[f] & 7u));
+}
+
+int FeatureAssignment::edges_assigned(Index f) const {
+  return std::popcount(static_cast<unsigned>(m_owned[f] >> 3));
 }
 
 Index FeatureAssignment::vf_representative(Index v, Index g, bool adjacency_culling) const {

@@ -2,6 +2,8 @@
 /// @file
 /// Feature assignment (Curtis et al. 2008 representative triangles; the paper §3.1).
 
+#include <array>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -21,6 +23,10 @@ namespace tailor {
 /// rule); when there is none, (v, g) is in the isolated set. Every pair therefore has
 /// exactly one representative triangle pair or is isolated. The same holds for EE pairs
 /// with (owner(e1), owner(e2)) and the first vertex-disjoint pair of their faces.
+///
+/// For the hot loop of pair generation it also keeps, per face, which of its corners and
+/// edges it owns, and per vertex (edge) the other corners of its owner, so "does the
+/// owner share a vertex with g" needs no access to the owner's face.
 class FeatureAssignment {
  public:
   FeatureAssignment() = default;
@@ -31,8 +37,15 @@ class FeatureAssignment {
   /// Triangle an edge is assigned to.
   Index edge_owner(Index e) const { return m_edge_owner[e]; }
   /// Number of vertices / edges assigned to face `f`.
-  int vertices_assigned(Index f) const { return m_vertex_count[f]; }
-  int edges_assigned(Index f) const { return m_edge_count[f]; }
+  int vertices_assigned(Index f) const;
+  int edges_assigned(Index f) const;
+  /// Whether face `f` owns its corner `k` (faces(f, k)) / its edge `k` (face_edges(f)[k]).
+  bool owns_corner(Index f, int k) const { return (m_owned[f] >> k) & 1; }
+  bool owns_edge(Index f, int k) const { return (m_owned[f] >> (3 + k)) & 1; }
+  /// The two corners of owner(v) other than v (-1 for an unreferenced vertex).
+  const std::array<Index, 2>& owner_other_corners(Index v) const { return m_owner_others[v]; }
+  /// The corner of owner(e) that is not on edge e.
+  Index owner_opposite_corner(Index e) const { return m_owner_opposite[e]; }
 
   /// The face of the triangle pair that tests VF pair (v, g), v not in g; -1 if the pair
   /// is isolated (only possible with adjacency culling).
@@ -44,7 +57,9 @@ class FeatureAssignment {
  private:
   const TriangleMesh* m_mesh = nullptr;
   std::vector<Index> m_vertex_owner, m_edge_owner;
-  std::vector<std::uint8_t> m_vertex_count, m_edge_count;
+  std::vector<std::uint8_t> m_owned;  // bits 0-2: corners, 3-5: edges
+  std::vector<std::array<Index, 2>> m_owner_others;
+  std::vector<Index> m_owner_opposite;
 };
 
 }  // namespace tailor

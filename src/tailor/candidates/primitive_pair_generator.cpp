@@ -1,21 +1,57 @@
 #include "tailor/candidates/primitive_pair_generator.hpp"
 
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
-#include "tailor/geometry/coplanarity_sign.hpp"
+#include <algorithm>
+
+#include "tailor/candidates/projection_filter.hpp"
 
 namespace tailor {
 namespace {
 
-struct ThreadOutput {
-  std::vector<VertexFacePair> vertex_face;
-  std::vector<EdgeEdgePair> edge_edge;
-  LowLevelCounts counts;
+using ConstVec3 = Eigen::Map<const Vec3>;
+
+// A moving point: its coordinates at t=0 and t=1 (rows of the row-major positions).
+struct Corner {
+  const double* t0;
+  const double* t1;
 };
 
-bool face_has_vertex(const FaceArray& faces, Index f, Index v) {
-  return faces(f, 0) == v || faces(f, 1) == v || faces(f, 2) == v;
+Corner corner(const Positions& x0, const Positions& x1, Index v) {
+  return {x0.data() + 3 * static_cast<std::ptrdiff_t>(v),
+          x1.data() + 3 * static_cast<std::ptrdiff_t>(v)};
+}
+
+// Swept box of moving points (exact: min and max of the inputs).
+struct Box {
+  double low[3], high[3];
+};
+
+Box swept(Corner c) {
+  Box box;
+  for (int k = 0; k < 3; ++k) {
+    box.low[k] = std::min(c.t0[k], c.t1[k]);
+    box.high[k] = std::max(c.t0[k], c.t1[k]);
+  }
+  return box;
+}
+
+Box joined(const Box& a, const Box& b) {
+  Box box;
+  for (int k = 0; k < 3; ++k) {
+    box.low[k] = std::min(a.low[k], b.low[k]);
+    box.high[k] = std::max(a.high[k], b.high[k]);
+  }
+  return box;
+}
+
+bool overlap(const Box& a, const Box& b) {
+  return (a.low[0] <= b.high[0]) & (b.low[0] <= a.high[0]) & (a.low[1] <= b.high[1]) &
+         (b.low[1] <= a.high[1]) & (a.low[2] <= b.high[2]) & (b.low[2] <= a.high[2]);
+}
+
+bool contains(const Index* face, Index v) {
+  return face[0] == v || face[1] == v || face[2] == v;
 }
 
 bool edges_share_vertex(const EdgeArray& edges, Index e1, Index e2) {
@@ -23,92 +59,178 @@ bool edges_share_vertex(const EdgeArray& edges, Index e1, Index e2) {
          edges(e1, 1) == edges(e2, 0) || edges(e1, 1) == edges(e2, 1);
 }
 
-class StepContext {
+struct ThreadSink {
+  std::vector<VertexFacePair>& vertex_face;
+  std::vector<EdgeEdgePair>& edge_edge;
+  LowLevelCounts& counts;
+};
+
+// The stages after feature assignment, for one step.
+class Stages {
  public:
-  StepContext(const TriangleMesh& mesh, const FeatureAssignment& assignment,
-              const std::vector<Aabb>& edge_boxes, const std::vector<Aabb>& face_boxes,
-              const Positions& x0, const Positions& x1, const LowLevelOptions& options)
-      : m_faces(mesh.faces()),
-        m_edges(mesh.edges()),
+  Stages(const TriangleMesh& mesh, const FeatureAssignment& assignment, const Positions& x0,
+         const Positions& x1, const LowLevelOptions& options)
+      : m_mesh(mesh),
         m_assignment(assignment),
-        m_edge_boxes(edge_boxes),
-        m_face_boxes(face_boxes),
         m_x0(x0),
         m_x1(x1),
-        m_options(options) {}
+        m_options(options),
+        m_filters{options.coplanarity_filter, options.projection_filter} {}
 
-  // Stages 2 and 3 for one VF pair.
-  void offer_vertex_face(Index v, Index f, ThreadOutput& out) const {
+  Corner at(Index v) const { return corner(m_x0, m_x1, v); }
+
+  // Boxes, DNF and projection filters for VF pair (v, f), the face's corners a, b, c;
+  // `p_box` and `face_box` are their swept boxes.
+  void vertex_face(Index v, Index f, Corner p, Corner a, Corner b, Corner c, const Box& p_box,
+                   const Box& face_box, ThreadSink& out) const {
     ++out.counts.vf_generated;
-    if (m_options.primitive_boxes &&
-        !swept_box(m_x0, m_x1, {v}).overlaps(m_face_boxes[static_cast<std::size_t>(f)])) {
-      return;
-    }
+    if (m_options.primitive_boxes && !overlap(p_box, face_box)) return;
     ++out.counts.vf_after_boxes;
-    const Index a = m_faces(f, 0), b = m_faces(f, 1), c = m_faces(f, 2);
-    if (m_options.coplanarity_filter &&
-        !may_become_coplanar(m_x0.row(a), m_x0.row(b), m_x0.row(c), m_x0.row(v), m_x1.row(a),
-                             m_x1.row(b), m_x1.row(c), m_x1.row(v))) {
-      return;
+    if (m_filters.coplanarity || m_filters.projection) {
+      const PairVerdict verdict = vertex_face_verdict(
+          ConstVec3(p.t0), ConstVec3(a.t0), ConstVec3(b.t0), ConstVec3(c.t0), ConstVec3(p.t1),
+          ConstVec3(a.t1), ConstVec3(b.t1), ConstVec3(c.t1), m_filters);
+      if (verdict == PairVerdict::never_coplanar) return;
+      ++out.counts.vf_after_filter;
+      if (verdict == PairVerdict::apart_in_projection) return;
+    } else {
+      ++out.counts.vf_after_filter;
     }
-    ++out.counts.vf_after_filter;
+    ++out.counts.vf_after_projection;
     out.vertex_face.push_back({v, f});
   }
 
-  // Stages 2 and 3 for one EE pair, e1 < e2.
-  void offer_edge_edge(Index e1, Index e2, ThreadOutput& out) const {
+  // The same for EE pair (e1, e2), e1 < e2, edges ab and cd.
+  void edge_edge(Index e1, Index e2, Corner a, Corner b, Corner c, Corner d, const Box& box1,
+                 const Box& box2, ThreadSink& out) const {
     ++out.counts.ee_generated;
-    if (m_options.primitive_boxes && !m_edge_boxes[static_cast<std::size_t>(e1)].overlaps(
-                                         m_edge_boxes[static_cast<std::size_t>(e2)])) {
-      return;
-    }
+    if (m_options.primitive_boxes && !overlap(box1, box2)) return;
     ++out.counts.ee_after_boxes;
-    const Index a = m_edges(e1, 0), b = m_edges(e1, 1), c = m_edges(e2, 0), d = m_edges(e2, 1);
-    if (m_options.coplanarity_filter &&
-        !may_become_coplanar(m_x0.row(a), m_x0.row(b), m_x0.row(c), m_x0.row(d), m_x1.row(a),
-                             m_x1.row(b), m_x1.row(c), m_x1.row(d))) {
-      return;
+    if (m_filters.coplanarity || m_filters.projection) {
+      const PairVerdict verdict = edge_edge_verdict(
+          ConstVec3(a.t0), ConstVec3(b.t0), ConstVec3(c.t0), ConstVec3(d.t0), ConstVec3(a.t1),
+          ConstVec3(b.t1), ConstVec3(c.t1), ConstVec3(d.t1), m_filters);
+      if (verdict == PairVerdict::never_coplanar) return;
+      ++out.counts.ee_after_filter;
+      if (verdict == PairVerdict::apart_in_projection) return;
+    } else {
+      ++out.counts.ee_after_filter;
     }
-    ++out.counts.ee_after_filter;
+    ++out.counts.ee_after_projection;
     out.edge_edge.push_back({e1, e2});
   }
 
-  // Stage 1: the feature pairs a CTP (f, g) owes.
-  void expand(const TriangleMesh& mesh, Index f, Index g, ThreadOutput& out) const {
-    const bool assigned = m_options.feature_assignment;
-    const bool adjacency = m_options.adjacency_culling;
-    for (const auto& [from, to] : {std::pair{f, g}, std::pair{g, f}}) {
+  // A VF pair by ids (the isolated set).
+  void vertex_face(Index v, Index f, ThreadSink& out) const {
+    const FaceArray& faces = m_mesh.faces();
+    const Corner p = at(v), a = at(faces(f, 0)), b = at(faces(f, 1)), c = at(faces(f, 2));
+    vertex_face(v, f, p, a, b, c, swept(p), joined(joined(swept(a), swept(b)), swept(c)), out);
+  }
+
+  // An EE pair by ids, e1 < e2 (the isolated set).
+  void edge_edge(Index e1, Index e2, ThreadSink& out) const {
+    const EdgeArray& edges = m_mesh.edges();
+    const Corner a = at(edges(e1, 0)), b = at(edges(e1, 1));
+    const Corner c = at(edges(e2, 0)), d = at(edges(e2, 1));
+    edge_edge(e1, e2, a, b, c, d, joined(swept(a), swept(b)), joined(swept(c), swept(d)), out);
+  }
+
+  // Stage 1 and the rest: the feature pairs CTP (f, g) owes. The six corners are read
+  // once; their boxes are shared by all 15 candidate pairs.
+  void expand(Index f, Index g, ThreadSink& out) const {
+    const FaceArray& faces = m_mesh.faces();
+    const Index face[2][3] = {{faces(f, 0), faces(f, 1), faces(f, 2)},
+                              {faces(g, 0), faces(g, 1), faces(g, 2)}};
+    const Index ids[2] = {f, g};
+    Corner corners[2][3];
+    Box corner_boxes[2][3], face_boxes[2];
+    for (int s = 0; s < 2; ++s) {
       for (int k = 0; k < 3; ++k) {
-        const Index v = m_faces(from, k);
-        if (face_has_vertex(m_faces, to, v)) continue;
-        if (assigned && m_assignment.vf_representative(v, to, adjacency) != from) continue;
-        offer_vertex_face(v, to, out);
+        corners[s][k] = at(face[s][k]);
+        corner_boxes[s][k] = swept(corners[s][k]);
+      }
+      face_boxes[s] = joined(joined(corner_boxes[s][0], corner_boxes[s][1]), corner_boxes[s][2]);
+    }
+    bool disjoint = true;
+    for (int k = 0; k < 3; ++k) disjoint &= !contains(face[1], face[0][k]);
+
+    for (int s = 0; s < 2; ++s) {
+      const int o = 1 - s;
+      for (int k = 0; k < 3; ++k) {
+        const Index v = face[s][k];
+        if (!disjoint && contains(face[o], v)) continue;
+        if (!owes_vertex_face(ids[s], k, v, ids[o], face[o], disjoint)) continue;
+        vertex_face(v, ids[o], corners[s][k], corners[o][0], corners[o][1], corners[o][2],
+                    corner_boxes[s][k], face_boxes[o], out);
       }
     }
-    const auto edges_f = mesh.face_edges(f), edges_g = mesh.face_edges(g);
-    for (Index ef : edges_f) {
-      for (Index eg : edges_g) {
-        if (edges_share_vertex(m_edges, ef, eg)) continue;
-        const Index lo = std::min(ef, eg), hi = std::max(ef, eg);
-        if (assigned) {
-          const auto rep = m_assignment.ee_representative(lo, hi, adjacency);
-          const auto expected = ef < eg ? std::pair{f, g} : std::pair{g, f};
-          if (rep != expected) continue;
+
+    const auto edges_f = m_mesh.face_edges(f), edges_g = m_mesh.face_edges(g);
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        const Index ef = edges_f[i], eg = edges_g[j];
+        if (!disjoint && edges_share_vertex(m_mesh.edges(), ef, eg)) continue;
+        if (!owes_edge_edge(f, i, ef, face[0], g, j, eg, face[1], disjoint)) continue;
+        // Edge i of a face joins its corners i and i+1.
+        const int i1 = (i + 1) % 3, j1 = (j + 1) % 3;
+        Box box_f = joined(corner_boxes[0][i], corner_boxes[0][i1]);
+        Box box_g = joined(corner_boxes[1][j], corner_boxes[1][j1]);
+        // Orient each edge as stored (a < b) and order the pair by edge id, so that a pair
+        // reaches the filters with the same coordinates whichever CTP owes it.
+        Corner a = corners[0][i], b = corners[0][i1], c = corners[1][j], d = corners[1][j1];
+        if (face[0][i] > face[0][i1]) std::swap(a, b);
+        if (face[1][j] > face[1][j1]) std::swap(c, d);
+        if (ef < eg) {
+          edge_edge(ef, eg, a, b, c, d, box_f, box_g, out);
+        } else {
+          edge_edge(eg, ef, c, d, a, b, box_g, box_f, out);
         }
-        offer_edge_edge(lo, hi, out);
       }
     }
   }
 
  private:
-  const FaceArray& m_faces;
-  const EdgeArray& m_edges;
+  // Whether CTP (from, to) is the representative of VF pair (corner k of `from`, `to`).
+  bool owes_vertex_face(Index from, int k, Index v, Index to, const Index* to_face,
+                        bool disjoint) const {
+    if (!m_options.feature_assignment) return true;
+    if (!disjoint)
+      return m_assignment.vf_representative(v, to, m_options.adjacency_culling) == from;
+    if (m_assignment.owns_corner(from, k)) return true;  // owner(v) = from, disjoint from `to`
+    if (!m_options.adjacency_culling) return false;      // the representative is owner(v)
+    // owner(v) shares a vertex with `to` only through its other corners (v is not in `to`);
+    // otherwise the representative is owner(v) != from.
+    const auto& others = m_assignment.owner_other_corners(v);
+    if (!contains(to_face, others[0]) && !contains(to_face, others[1])) return false;
+    return first_face_disjoint_from(m_mesh, v, to) == from;
+  }
+
+  // Whether CTP (f, g) is the representative of EE pair (edge i of f, edge j of g).
+  bool owes_edge_edge(Index f, int i, Index ef, const Index* face_f, Index g, int j, Index eg,
+                      const Index* face_g, bool disjoint) const {
+    if (!m_options.feature_assignment) return true;
+    const Index lo = std::min(ef, eg), hi = std::max(ef, eg);
+    const auto expected = ef < eg ? std::pair{f, g} : std::pair{g, f};
+    if (!disjoint) {
+      return m_assignment.ee_representative(lo, hi, m_options.adjacency_culling) == expected;
+    }
+    if (m_assignment.owns_edge(f, i) && m_assignment.owns_edge(g, j)) return true;
+    if (!m_options.adjacency_culling) return false;  // the representative is the owners
+    // The owners {p1, q1, r1} ⊃ ef and {p2, q2, r2} ⊃ eg: f and g share no vertex, so
+    // they can only share r1 or r2.
+    const Index r1 = m_assignment.owner_opposite_corner(ef);
+    const Index r2 = m_assignment.owner_opposite_corner(eg);
+    const Index p1 = face_f[i], q1 = face_f[(i + 1) % 3], p2 = face_g[j], q2 = face_g[(j + 1) % 3];
+    if (r1 != p2 && r1 != q2 && r1 != r2 && r2 != p1 && r2 != q1) return false;
+    return first_disjoint_face_pair(m_mesh, lo, hi) == expected;
+  }
+
+  const TriangleMesh& m_mesh;
   const FeatureAssignment& m_assignment;
-  const std::vector<Aabb>& m_edge_boxes;
-  const std::vector<Aabb>& m_face_boxes;
   const Positions& m_x0;
   const Positions& m_x1;
   const LowLevelOptions& m_options;
+  const PairFilters m_filters;
 };
 
 }  // namespace
@@ -120,64 +242,82 @@ LowLevelCounts& LowLevelCounts::operator+=(const LowLevelCounts& other) {
   ee_after_boxes += other.ee_after_boxes;
   vf_after_filter += other.vf_after_filter;
   ee_after_filter += other.ee_after_filter;
+  vf_after_projection += other.vf_after_projection;
+  ee_after_projection += other.ee_after_projection;
   return *this;
 }
 
 PrimitivePairGenerator::PrimitivePairGenerator(const TriangleMesh& mesh)
     : m_mesh(&mesh), m_assignment(mesh) {}
 
-void PrimitivePairGenerator::generate(std::span<const TrianglePair> ctps,
-                                      const IsolatedSet& isolated, const Positions& x0,
-                                      const Positions& x1, const LowLevelOptions& options,
-                                      std::vector<VertexFacePair>& vertex_face,
-                                      std::vector<EdgeEdgePair>& edge_edge,
-                                      LowLevelCounts& counts) {
-  vertex_face.clear();
-  edge_edge.clear();
-  const TriangleMesh& mesh = *m_mesh;
-  if (options.primitive_boxes) {
-    m_edge_boxes.resize(static_cast<std::size_t>(mesh.num_edges()));
-    m_face_boxes.resize(static_cast<std::size_t>(mesh.num_faces()));
-    tbb::parallel_for(tbb::blocked_range<Index>(0, mesh.num_edges(), 4096), [&](const auto& r) {
-      for (Index e = r.begin(); e < r.end(); ++e) {
-        m_edge_boxes[e] = swept_box(x0, x1, {mesh.edges()(e, 0), mesh.edges()(e, 1)});
-      }
-    });
-    tbb::parallel_for(tbb::blocked_range<Index>(0, mesh.num_faces(), 4096), [&](const auto& r) {
-      for (Index f = r.begin(); f < r.end(); ++f) {
-        const auto v = mesh.faces().row(f);
-        m_face_boxes[f] = swept_box(x0, x1, {v[0], v[1], v[2]});
-      }
-    });
+void PrimitivePairGenerator::begin_step() {
+  for (ThreadOutput& out : m_outputs) {
+    out.vertex_face.clear();
+    out.edge_edge.clear();
+    out.counts = {};
   }
-  const StepContext context(mesh, m_assignment, m_edge_boxes, m_face_boxes, x0, x1, options);
-  tbb::enumerable_thread_specific<ThreadOutput> outputs;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ctps.size(), 256), [&](const auto& r) {
-    ThreadOutput& out = outputs.local();
-    for (std::size_t i = r.begin(); i < r.end(); ++i) {
-      context.expand(mesh, ctps[i].first, ctps[i].second, out);
-    }
+}
+
+void PrimitivePairGenerator::clear_pairs() {
+  for (ThreadOutput& out : m_outputs) {
+    out.vertex_face.clear();
+    out.edge_edge.clear();
+  }
+}
+
+void PrimitivePairGenerator::add_triangle_pairs(std::span<const TrianglePair> ctps,
+                                                const Positions& x0, const Positions& x1,
+                                                const LowLevelOptions& options) {
+  const Stages stages(*m_mesh, m_assignment, x0, x1, options);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ctps.size(), 512), [&](const auto& r) {
+    ThreadOutput& local = m_outputs.local();
+    ThreadSink out{local.vertex_face, local.edge_edge, local.counts};
+    for (std::size_t i = r.begin(); i < r.end(); ++i)
+      stages.expand(ctps[i].first, ctps[i].second, out);
   });
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, isolated.vertex_face.size(), 1024),
-                    [&](const auto& r) {
-                      ThreadOutput& out = outputs.local();
-                      for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                        context.offer_vertex_face(isolated.vertex_face[i].vertex,
-                                                  isolated.vertex_face[i].face, out);
-                      }
-                    });
+}
+
+void PrimitivePairGenerator::add_isolated(const IsolatedSet& isolated, const Positions& x0,
+                                          const Positions& x1, const LowLevelOptions& options) {
+  const Stages stages(*m_mesh, m_assignment, x0, x1, options);
   tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, isolated.edge_edge.size(), 1024), [&](const auto& r) {
-        ThreadOutput& out = outputs.local();
+      tbb::blocked_range<std::size_t>(0, isolated.vertex_face.size(), 1024), [&](const auto& r) {
+        ThreadOutput& local = m_outputs.local();
+        ThreadSink out{local.vertex_face, local.edge_edge, local.counts};
         for (std::size_t i = r.begin(); i < r.end(); ++i) {
-          context.offer_edge_edge(isolated.edge_edge[i].edge_a, isolated.edge_edge[i].edge_b, out);
+          stages.vertex_face(isolated.vertex_face[i].vertex, isolated.vertex_face[i].face, out);
         }
       });
-  for (ThreadOutput& out : outputs) {
-    vertex_face.insert(vertex_face.end(), out.vertex_face.begin(), out.vertex_face.end());
-    edge_edge.insert(edge_edge.end(), out.edge_edge.begin(), out.edge_edge.end());
-    counts += out.counts;
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, isolated.edge_edge.size(), 1024), [&](const auto& r) {
+        ThreadOutput& local = m_outputs.local();
+        ThreadSink out{local.vertex_face, local.edge_edge, local.counts};
+        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+          stages.edge_edge(isolated.edge_edge[i].edge_a, isolated.edge_edge[i].edge_b, out);
+        }
+      });
+}
+
+std::vector<std::span<const VertexFacePair>> PrimitivePairGenerator::vertex_face_blocks() const {
+  std::vector<std::span<const VertexFacePair>> blocks;
+  for (const ThreadOutput& out : m_outputs) {
+    if (!out.vertex_face.empty()) blocks.emplace_back(out.vertex_face);
   }
+  return blocks;
+}
+
+std::vector<std::span<const EdgeEdgePair>> PrimitivePairGenerator::edge_edge_blocks() const {
+  std::vector<std::span<const EdgeEdgePair>> blocks;
+  for (const ThreadOutput& out : m_outputs) {
+    if (!out.edge_edge.empty()) blocks.emplace_back(out.edge_edge);
+  }
+  return blocks;
+}
+
+LowLevelCounts PrimitivePairGenerator::counts() const {
+  LowLevelCounts total;
+  for (const ThreadOutput& out : m_outputs) total += out.counts;
+  return total;
 }
 
 }  // namespace tailor

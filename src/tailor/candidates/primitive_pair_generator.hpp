@@ -3,11 +3,12 @@
 /// Low-level culling: from candidate triangle pairs (and the isolated set) to the VF and
 /// EE pairs that reach the exact CCD (the paper §3).
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include <cstdint>
 #include <span>
 #include <vector>
 
-#include "tailor/bvh/aabb.hpp"
 #include "tailor/candidates/feature_assignment.hpp"
 #include "tailor/candidates/isolated_set.hpp"
 #include "tailor/candidates/primitive_pair.hpp"
@@ -20,7 +21,9 @@ struct LowLevelOptions {
   bool feature_assignment = true;  ///< test each feature pair from one triangle pair only
   bool primitive_boxes = true;     ///< drop pairs whose swept boxes do not overlap
   bool coplanarity_filter = true;  ///< drop pairs that can never become coplanar
-  bool adjacency_culling = true;   ///< the CTPs hold no adjacent pairs (see FeatureAssignment)
+  bool projection_filter =
+      true;  ///< drop pairs whose projection never touches (projection_filter.hpp)
+  bool adjacency_culling = true;  ///< the CTPs hold no adjacent pairs (see FeatureAssignment)
 };
 
 /// VF and EE pair counts after each low-level stage.
@@ -28,29 +31,48 @@ struct LowLevelCounts {
   std::int64_t vf_generated = 0, ee_generated = 0;
   std::int64_t vf_after_boxes = 0, ee_after_boxes = 0;
   std::int64_t vf_after_filter = 0, ee_after_filter = 0;
+  std::int64_t vf_after_projection = 0, ee_after_projection = 0;
   LowLevelCounts& operator+=(const LowLevelCounts& other);
 };
 
-/// Generates the candidate primitive pairs of one step.
+/// Generates the candidate primitive pairs of a step, in rounds: clear_pairs(), add
+/// triangle pairs (and the isolated set), read the surviving pairs by blocks. The blocks
+/// are per-thread buffers that keep their memory between rounds and steps, so a warm
+/// generator does not allocate; the counts add up over a step (until begin_step()).
 class PrimitivePairGenerator {
  public:
   PrimitivePairGenerator() = default;
   explicit PrimitivePairGenerator(const TriangleMesh& mesh);
 
-  /// Fills `vertex_face` and `edge_edge` (cleared first) with the pairs of the CTPs and
-  /// of `isolated` that survive the enabled stages. Parallel; the sets do not depend on
-  /// the thread count.
-  void generate(std::span<const TrianglePair> ctps, const IsolatedSet& isolated,
-                const Positions& x0, const Positions& x1, const LowLevelOptions& options,
-                std::vector<VertexFacePair>& vertex_face, std::vector<EdgeEdgePair>& edge_edge,
-                LowLevelCounts& counts);
+  /// Starts a step: no pairs, zero counts.
+  void begin_step();
+  /// Starts a round: no pairs (the counts go on).
+  void clear_pairs();
+  /// Adds the pairs owed by `ctps` that survive the enabled stages (parallel).
+  void add_triangle_pairs(std::span<const TrianglePair> ctps, const Positions& x0,
+                          const Positions& x1, const LowLevelOptions& options);
+  /// Adds the pairs of `isolated` that survive the enabled stages (parallel).
+  void add_isolated(const IsolatedSet& isolated, const Positions& x0, const Positions& x1,
+                    const LowLevelOptions& options);
+
+  /// The surviving pairs since clear_pairs(), by blocks; the sets do not depend on the
+  /// thread count (the order does).
+  std::vector<std::span<const VertexFacePair>> vertex_face_blocks() const;
+  std::vector<std::span<const EdgeEdgePair>> edge_edge_blocks() const;
+  /// Counts since begin_step().
+  LowLevelCounts counts() const;
 
   const FeatureAssignment& assignment() const { return m_assignment; }
 
  private:
+  struct ThreadOutput {
+    std::vector<VertexFacePair> vertex_face;
+    std::vector<EdgeEdgePair> edge_edge;
+    LowLevelCounts counts;
+  };
   const TriangleMesh* m_mesh = nullptr;
   FeatureAssignment m_assignment;
-  std::vector<Aabb> m_edge_boxes, m_face_boxes;  // swept boxes of the current step
+  tbb::enumerable_thread_specific<ThreadOutput> m_outputs;
 };
 
 }  // namespace tailor

@@ -1,6 +1,5 @@
 #include "tailor/culling/bvh_traversal.hpp"
 
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_invoke.h>
 
 #include "tailor/culling/contour_test.hpp"
@@ -8,23 +7,22 @@
 namespace tailor {
 namespace {
 
-// Node pairs under this many primitives in total are traversed by one task.
+// Node pairs under this many faces in total are traversed by one task.
 constexpr Index kTaskGrain = 512;
 
-struct ThreadOutput {
-  std::vector<TrianglePair> pairs;
-  TraversalCounts counts;
-};
+}  // namespace
 
-class Traversal {
+// One traversal: the recursion carries the output of the task it runs in, so the
+// thread-local lookup happens once per task, not once per node pair.
+class CandidateTraversal::Walk {
  public:
-  Traversal(const TriangleMesh& mesh, const TraversalOptions& options)
-      : m_mesh(mesh), m_options(options) {}
+  Walk(const TriangleMesh& mesh, const TraversalOptions& options,
+       tbb::enumerable_thread_specific<ThreadOutput>& outputs)
+      : m_mesh(mesh), m_options(options), m_outputs(outputs) {}
 
-  void self(const MeshBvh& bvh, const NodeContours& contours, StepPositions step, Index node) {
-    const Bvh& tree = bvh.tree();
-    if (tree.is_leaf(node)) return;
-    ThreadOutput& out = m_outputs.local();
+  void self(const MeshBvh& bvh, const NodeContours& contours, StepPositions step, Index node,
+            ThreadOutput& out) {
+    if (bvh.is_leaf(node)) return;
     if (m_options.normal_cones && bvh.cone(node).is_under_90_degrees()) {
       if (!m_options.contour_test) {
         ++out.counts.nodes_culled_by_cones;
@@ -38,62 +36,49 @@ class Traversal {
       }
       ++out.counts.contour_tests_failed;
     }
-    const Index left = tree.left(node), right = tree.right(node);
-    if (static_cast<Index>(tree.primitives_under(node).size()) > kTaskGrain) {
-      tbb::parallel_invoke([&] { self(bvh, contours, step, left); },
-                           [&] { self(bvh, contours, step, right); },
-                           [&] { pair(bvh, left, bvh, right); });
+    const Index left = bvh.left(node), right = bvh.right(node);
+    if (bvh.size(node) > kTaskGrain) {
+      tbb::parallel_invoke([&] { self(bvh, contours, step, left, m_outputs.local()); },
+                           [&] { self(bvh, contours, step, right, m_outputs.local()); },
+                           [&] { pair(bvh, left, bvh, right, m_outputs.local()); });
     } else {
-      self(bvh, contours, step, left);
-      self(bvh, contours, step, right);
-      pair(bvh, left, bvh, right);
+      self(bvh, contours, step, left, out);
+      self(bvh, contours, step, right, out);
+      pair(bvh, left, bvh, right, out);
     }
   }
 
-  void pair(const MeshBvh& a, Index node_a, const MeshBvh& b, Index node_b) {
-    const Bvh& ta = a.tree();
-    const Bvh& tb = b.tree();
-    ThreadOutput& out = m_outputs.local();
+  void pair(const MeshBvh& a, Index node_a, const MeshBvh& b, Index node_b, ThreadOutput& out) {
     ++out.counts.node_pairs_visited;
-    if (!ta.box(node_a).overlaps(tb.box(node_b))) return;
-    const bool leaf_a = ta.is_leaf(node_a), leaf_b = tb.is_leaf(node_b);
+    if (!a.box(node_a).overlaps(b.box(node_b))) return;
+    const bool leaf_a = a.is_leaf(node_a), leaf_b = b.is_leaf(node_b);
     if (leaf_a && leaf_b) {
-      Index f = a.face(ta.primitive(node_a)), g = b.face(tb.primitive(node_b));
+      Index f = a.leaf_face(node_a), g = b.leaf_face(node_b);
       if (m_options.adjacency_culling && m_mesh.faces_share_vertex(f, g)) return;
       if (f > g) std::swap(f, g);
-      out.pairs.push_back({f, g});
+      out.push({f, g});
       return;
     }
-    const auto size_a = static_cast<Index>(ta.primitives_under(node_a).size());
-    const auto size_b = static_cast<Index>(tb.primitives_under(node_b).size());
+    const Index size_a = a.size(node_a), size_b = b.size(node_b);
     const bool split_a = leaf_b || (!leaf_a && size_a >= size_b);
-    const Index child1_a = split_a ? ta.left(node_a) : node_a;
-    const Index child2_a = split_a ? ta.right(node_a) : node_a;
-    const Index child1_b = split_a ? node_b : tb.left(node_b);
-    const Index child2_b = split_a ? node_b : tb.right(node_b);
+    const Index child1_a = split_a ? a.left(node_a) : node_a;
+    const Index child2_a = split_a ? a.right(node_a) : node_a;
+    const Index child1_b = split_a ? node_b : b.left(node_b);
+    const Index child2_b = split_a ? node_b : b.right(node_b);
     if (size_a + size_b > kTaskGrain) {
-      tbb::parallel_invoke([&] { pair(a, child1_a, b, child1_b); },
-                           [&] { pair(a, child2_a, b, child2_b); });
+      tbb::parallel_invoke([&] { pair(a, child1_a, b, child1_b, m_outputs.local()); },
+                           [&] { pair(a, child2_a, b, child2_b, m_outputs.local()); });
     } else {
-      pair(a, child1_a, b, child1_b);
-      pair(a, child2_a, b, child2_b);
-    }
-  }
-
-  void collect(std::vector<TrianglePair>& pairs, TraversalCounts& counts) {
-    for (ThreadOutput& out : m_outputs) {
-      pairs.insert(pairs.end(), out.pairs.begin(), out.pairs.end());
-      counts += out.counts;
+      pair(a, child1_a, b, child1_b, out);
+      pair(a, child2_a, b, child2_b, out);
     }
   }
 
  private:
   const TriangleMesh& m_mesh;
   const TraversalOptions& m_options;
-  tbb::enumerable_thread_specific<ThreadOutput> m_outputs;
+  tbb::enumerable_thread_specific<ThreadOutput>& m_outputs;
 };
-
-}  // namespace
 
 TraversalCounts& TraversalCounts::operator+=(const TraversalCounts& other) {
   node_pairs_visited += other.node_pairs_visited;
@@ -103,22 +88,46 @@ TraversalCounts& TraversalCounts::operator+=(const TraversalCounts& other) {
   return *this;
 }
 
-void self_traversal(const TriangleMesh& mesh, const MeshBvh& bvh, const NodeContours& contours,
-                    StepPositions step, const TraversalOptions& options,
-                    std::vector<TrianglePair>& pairs, TraversalCounts& counts) {
-  if (bvh.tree().empty()) return;
-  Traversal traversal(mesh, options);
-  traversal.self(bvh, contours, step, 0);
-  traversal.collect(pairs, counts);
+void CandidateTraversal::clear() {
+  for (ThreadOutput& out : m_outputs) {
+    for (std::size_t b = 0; b < out.used; ++b) out.blocks[b].clear();
+    out.used = 0;
+    out.counts = {};
+  }
 }
 
-void pair_traversal(const TriangleMesh& mesh, const MeshBvh& a, const MeshBvh& b,
-                    const TraversalOptions& options, std::vector<TrianglePair>& pairs,
-                    TraversalCounts& counts) {
-  if (a.tree().empty() || b.tree().empty()) return;
-  Traversal traversal(mesh, options);
-  traversal.pair(a, 0, b, 0);
-  traversal.collect(pairs, counts);
+void CandidateTraversal::self(const MeshBvh& bvh, const NodeContours& contours, StepPositions step,
+                              const TraversalOptions& options) {
+  if (bvh.empty()) return;
+  Walk(*m_mesh, options, m_outputs).self(bvh, contours, step, 0, m_outputs.local());
+}
+
+void CandidateTraversal::pair(const MeshBvh& a, const MeshBvh& b, const TraversalOptions& options) {
+  if (a.empty() || b.empty()) return;
+  Walk(*m_mesh, options, m_outputs).pair(a, 0, b, 0, m_outputs.local());
+}
+
+std::vector<std::span<const TrianglePair>> CandidateTraversal::blocks() const {
+  std::vector<std::span<const TrianglePair>> result;
+  for (const ThreadOutput& out : m_outputs) {
+    for (std::size_t b = 0; b < out.used; ++b) result.emplace_back(out.blocks[b]);
+  }
+  return result;
+}
+
+std::int64_t CandidateTraversal::size() const {
+  std::int64_t total = 0;
+  for (const ThreadOutput& out : m_outputs) {
+    for (std::size_t b = 0; b < out.used; ++b)
+      total += static_cast<std::int64_t>(out.blocks[b].size());
+  }
+  return total;
+}
+
+TraversalCounts CandidateTraversal::counts() const {
+  TraversalCounts total;
+  for (const ThreadOutput& out : m_outputs) total += out.counts;
+  return total;
 }
 
 }  // namespace tailor

@@ -2,12 +2,15 @@
 /// @file
 /// High-level culling: BVH self- and pair-traversal producing candidate triangle pairs.
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "tailor/bvh/mesh_bvh.hpp"
-#include "tailor/culling/triangle_pair.hpp"
 #include "tailor/culling/node_contours.hpp"
+#include "tailor/culling/triangle_pair.hpp"
 #include "tailor/mesh/triangle_mesh.hpp"
 
 namespace tailor {
@@ -34,17 +37,52 @@ struct StepPositions {
   const Positions& x1;
 };
 
-/// Appends to `pairs` every CTP inside one BVH: self(node) = self(left) + self(right) +
-/// pair(left, right), skipping nodes certified by normal cones and the contour test.
-/// `contours` must belong to `bvh` (used only when the contour test is on). Parallel;
-/// the set of pairs and the counts do not depend on the thread count, their order does.
-void self_traversal(const TriangleMesh& mesh, const MeshBvh& bvh, const NodeContours& contours,
-                    StepPositions step, const TraversalOptions& options,
-                    std::vector<TrianglePair>& pairs, TraversalCounts& counts);
+/// Collects the candidate triangle pairs (CTPs) of a step from any number of self- and
+/// pair-traversals. The pairs stay in per-thread lists of fixed-size blocks that keep
+/// their memory from step to step (no allocation once warm, no copy on growth, at most
+/// one partly filled block per thread) and are read block by block.
+class CandidateTraversal {
+ public:
+  explicit CandidateTraversal(const TriangleMesh& mesh) : m_mesh(&mesh) {}
 
-/// Appends to `pairs` every CTP between two BVHs over disjoint face sets.
-void pair_traversal(const TriangleMesh& mesh, const MeshBvh& a, const MeshBvh& b,
-                    const TraversalOptions& options, std::vector<TrianglePair>& pairs,
-                    TraversalCounts& counts);
+  /// Forgets the previous step's pairs and counts (keeping the memory).
+  void clear();
+
+  /// Adds every CTP inside one BVH: self(node) = self(left) + self(right) + pair(left,
+  /// right), skipping nodes certified by normal cones and the contour test. `contours`
+  /// must belong to `bvh` (used only when the contour test is on). Parallel; the set of
+  /// pairs and the counts do not depend on the thread count, their order does.
+  void self(const MeshBvh& bvh, const NodeContours& contours, StepPositions step,
+            const TraversalOptions& options);
+  /// Adds every CTP between two BVHs over disjoint face sets.
+  void pair(const MeshBvh& a, const MeshBvh& b, const TraversalOptions& options);
+
+  /// The pairs found since clear(), as blocks (each pair `first < second`).
+  std::vector<std::span<const TrianglePair>> blocks() const;
+  /// Number of pairs found since clear().
+  std::int64_t size() const;
+  /// Counts since clear().
+  TraversalCounts counts() const;
+
+ private:
+  // Pairs per block (256 KiB).
+  static constexpr std::size_t kBlockPairs = std::size_t{1} << 15;
+  struct ThreadOutput {
+    std::vector<std::vector<TrianglePair>> blocks;  // reserved to kBlockPairs each
+    std::size_t used = 0;                           // blocks in use (the last may be partial)
+    TraversalCounts counts;
+    void push(TrianglePair pair) {
+      if (used == 0 || blocks[used - 1].size() == kBlockPairs) {
+        if (used == blocks.size()) blocks.emplace_back().reserve(kBlockPairs);
+        ++used;
+      }
+      blocks[used - 1].push_back(pair);
+    }
+  };
+  class Walk;
+
+  const TriangleMesh* m_mesh;
+  tbb::enumerable_thread_specific<ThreadOutput> m_outputs;
+};
 
 }  // namespace tailor

@@ -1,5 +1,7 @@
 #include "tailor/culling/contour_test.hpp"
 
+#include "tailor/culling/certified_bernstein.hpp"
+
 #include <algorithm>
 #include <array>
 #include <limits>
@@ -16,68 +18,42 @@ struct Moving {
   double magnitude() const { return v0.norm() + v1.norm(); }
 };
 
-// A quadratic in t given by its Bernstein coefficients on [0, 1], each known to within
-// `bound` (a certified forward error bound).
-struct Quadratic {
-  std::array<double, 3> c;
-  double bound;
+// A quadratic in t on the step, every coefficient known to within one certified bound.
+using Quadratic = CertifiedBernstein<2>;
 
-  // +1 / -1 when the quadratic is certainly of that strict sign on [lo, hi], else 0.
-  // The coefficients on [lo, hi] come from the blossom B(s, u); lo and hi are dyadic
-  // and the blossom is a convex combination, so its rounding adds at most a few eps of
-  // the largest coefficient to the bound.
-  int sign_on(double lo, double hi) const {
-    auto blossom = [&](double s, double u) {
-      return c[0] * (1 - s) * (1 - u) + c[1] * ((1 - s) * u + s * (1 - u)) + c[2] * s * u;
-    };
-    const std::array<double, 3> d{blossom(lo, lo), blossom(lo, hi), blossom(hi, hi)};
-    const double slack =
-        bound + 16 * kEps * std::max({std::abs(c[0]), std::abs(c[1]), std::abs(c[2])});
-    if (d[0] > slack && d[1] > slack && d[2] > slack) return 1;
-    if (d[0] < -slack && d[1] < -slack && d[2] < -slack) return -1;
-    return 0;
-  }
-};
+Quadratic quadratic(double c0, double c1, double c2, double bound) {
+  return {{c0, c1, c2}, {bound, bound, bound}};
+}
 
 // a·(u(t)×v(t)): the 2D orientation in the projection along a.
 Quadratic orientation(const Moving& u, const Moving& v, const Vec3& a) {
-  return {{a.dot(u.v0.cross(v.v0)), 0.5 * a.dot(u.v0.cross(v.v1) + u.v1.cross(v.v0)),
-           a.dot(u.v1.cross(v.v1))},
-          32 * kEps * u.magnitude() * v.magnitude() * a.norm()};
+  return quadratic(a.dot(u.v0.cross(v.v0)), 0.5 * a.dot(u.v0.cross(v.v1) + u.v1.cross(v.v0)),
+                   a.dot(u.v1.cross(v.v1)), 32 * kEps * u.magnitude() * v.magnitude() * a.norm());
 }
 
 // |a|² (u⊥·v⊥) = (u·v)|a|² - (u·a)(v·a): the projected dot product, scaled.
 Quadratic projected_dot(const Moving& u, const Moving& v, const Vec3& a) {
   const double aa = a.squaredNorm();
   const double ua0 = u.v0.dot(a), ua1 = u.v1.dot(a), va0 = v.v0.dot(a), va1 = v.v1.dot(a);
-  return {{u.v0.dot(v.v0) * aa - ua0 * va0,
-           0.5 * ((u.v0.dot(v.v1) + u.v1.dot(v.v0)) * aa - ua0 * va1 - ua1 * va0),
-           u.v1.dot(v.v1) * aa - ua1 * va1},
-          32 * kEps * u.magnitude() * v.magnitude() * aa};
+  return quadratic(u.v0.dot(v.v0) * aa - ua0 * va0,
+                   0.5 * ((u.v0.dot(v.v1) + u.v1.dot(v.v0)) * aa - ua0 * va1 - ua1 * va0),
+                   u.v1.dot(v.v1) * aa - ua1 * va1, 32 * kEps * u.magnitude() * v.magnitude() * aa);
 }
 
 Moving difference(const Positions& x0, const Positions& x1, Index from, Index to) {
   return {x0.row(to) - x0.row(from), x1.row(to) - x1.row(from)};
 }
 
-// True when `holds(lo, hi)` can be established on every piece of a dyadic subdivision
-// of [0, 1] at most kMaxDepth levels deep (a condition may hold on the whole step
-// only piecewise, e.g. a corner that straightens while it turns through 90 degrees).
+// Depth of the dyadic subdivision of the step for the corner and crossing certificates.
 constexpr int kMaxDepth = 3;
-template <class Condition>
-bool holds_piecewise(const Condition& holds, double lo = 0, double hi = 1, int depth = 0) {
-  if (holds(lo, hi)) return true;
-  if (depth == kMaxDepth) return false;
-  const double mid = 0.5 * (lo + hi);
-  return holds_piecewise(holds, lo, mid, depth + 1) && holds_piecewise(holds, mid, hi, depth + 1);
-}
 
 // Consecutive edges u = (w[i-1], w[i]) and v = (w[i], w[i+1]) meet only at w[i] while
 // they turn strictly one way, or while their projected dot product stays positive.
 bool corner_stays_simple(const Moving& u, const Moving& v, const Vec3& a) {
   const Quadratic turn = orientation(u, v, a), dot = projected_dot(u, v, a);
   return holds_piecewise(
-      [&](double lo, double hi) { return dot.sign_on(lo, hi) > 0 || turn.sign_on(lo, hi) != 0; });
+      [&](double lo, double hi) { return dot.sign_on(lo, hi) > 0 || turn.sign_on(lo, hi) != 0; },
+      kMaxDepth);
 }
 
 // Segments pq and rs certainly disjoint: on each piece of the step, r and s strictly on
@@ -89,12 +65,14 @@ bool certainly_disjoint(const Positions& x0, const Positions& x1, Index p, Index
   const Quadratic side_s = orientation(pq, difference(x0, x1, p, s), a);
   const Quadratic side_p = orientation(rs, difference(x0, x1, r, p), a);
   const Quadratic side_q = orientation(rs, difference(x0, x1, r, q), a);
-  return holds_piecewise([&](double lo, double hi) {
-    const int r_sign = side_r.sign_on(lo, hi);
-    if (r_sign != 0 && r_sign == side_s.sign_on(lo, hi)) return true;
-    const int p_sign = side_p.sign_on(lo, hi);
-    return p_sign != 0 && p_sign == side_q.sign_on(lo, hi);
-  });
+  return holds_piecewise(
+      [&](double lo, double hi) {
+        const int r_sign = side_r.sign_on(lo, hi);
+        if (r_sign != 0 && r_sign == side_s.sign_on(lo, hi)) return true;
+        const int p_sign = side_p.sign_on(lo, hi);
+        return p_sign != 0 && p_sign == side_q.sign_on(lo, hi);
+      },
+      kMaxDepth);
 }
 
 struct Box2 {

@@ -13,17 +13,16 @@ struct HalfEdge {
 struct ContourBuilder {
   const TriangleMesh& mesh;
   const MeshBvh& bvh;
-  std::vector<std::int64_t>& offsets;
+  std::vector<std::int64_t>& starts;
   std::vector<Index>& lengths;
   std::vector<Index>& vertices;
 
   // Returns the node's boundary half-edges sorted by edge id; `valid` turns false when
   // the patch is not edge-manifold or not consistently oriented.
   std::vector<HalfEdge> build(Index node, bool& valid) {
-    const Bvh& tree = bvh.tree();
     std::vector<HalfEdge> boundary;
-    if (tree.is_leaf(node)) {
-      const Index f = bvh.face(tree.primitive(node));
+    if (bvh.is_leaf(node)) {
+      const Index f = bvh.leaf_face(node);
       const auto edges = mesh.face_edges(f);
       for (int i = 0; i < 3; ++i) {
         if (mesh.edge_faces(edges[i]).size() > 2) valid = false;  // non-manifold edge
@@ -33,8 +32,8 @@ struct ContourBuilder {
                 [](const HalfEdge& a, const HalfEdge& b) { return a.edge < b.edge; });
     } else {
       bool left_valid = true, right_valid = true;
-      std::vector<HalfEdge> left = build(tree.left(node), left_valid);
-      std::vector<HalfEdge> right = build(tree.right(node), right_valid);
+      std::vector<HalfEdge> left = build(bvh.left(node), left_valid);
+      std::vector<HalfEdge> right = build(bvh.right(node), right_valid);
       valid = left_valid && right_valid;
       boundary.reserve(left.size() + right.size());
       // Merge; an edge on both sides is interior now, and must be traversed in opposite
@@ -51,14 +50,14 @@ struct ContourBuilder {
         }
       }
     }
-    // Leaves are never tested (a triangle cannot touch itself): no loop stored.
-    offsets[node] = static_cast<std::int64_t>(vertices.size());
-    if (!tree.is_leaf(node) && valid) record_loop(node, boundary);
+    // Only nodes with a cone are ever tested (leaves never: a triangle cannot touch
+    // itself).
+    if (bvh.has_cone(node) && valid) record_loop(bvh.cone_index(node), boundary);
     return boundary;
   }
 
   // Stores the loop if the half-edges form exactly one cycle visiting each vertex once.
-  void record_loop(Index node, std::vector<HalfEdge> half_edges) {
+  void record_loop(Index slot, std::vector<HalfEdge> half_edges) {
     if (half_edges.size() < 3) return;
     std::sort(half_edges.begin(), half_edges.end(),
               [](const HalfEdge& a, const HalfEdge& b) { return a.from < b.from; });
@@ -70,6 +69,7 @@ struct ContourBuilder {
                                  [](const HalfEdge& h, Index x) { return h.from < x; });
       return (it == half_edges.end() || it->from != v) ? -1 : it->to;
     };
+    starts[slot] = static_cast<std::int64_t>(vertices.size());
     const Index start = half_edges.front().from;
     Index v = start;
     std::size_t steps = 0;
@@ -79,21 +79,24 @@ struct ContourBuilder {
       ++steps;
     } while (v >= 0 && v != start && steps <= half_edges.size());
     if (v != start || steps != half_edges.size()) {
-      vertices.resize(static_cast<std::size_t>(offsets[node]));  // open chain or several loops
+      vertices.resize(static_cast<std::size_t>(starts[slot]));  // open chain or several loops
       return;
     }
-    lengths[node] = static_cast<Index>(steps);
+    lengths[slot] = static_cast<Index>(steps);
   }
 };
 
 }  // namespace
 
 NodeContours::NodeContours(const TriangleMesh& mesh, const MeshBvh& bvh) {
-  const Index n = bvh.tree().num_nodes();
-  m_loop_offset.assign(n, 0);
-  m_loop_length.assign(n, 0);
+  const Index n = bvh.num_nodes();
+  m_slot.resize(static_cast<std::size_t>(n));
+  for (Index node = 0; node < n; ++node)
+    m_slot[node] = bvh.has_cone(node) ? bvh.cone_index(node) : -1;
+  m_loop_start.assign(static_cast<std::size_t>(bvh.num_cones()), 0);
+  m_loop_length.assign(static_cast<std::size_t>(bvh.num_cones()), 0);
   if (n == 0) return;
-  ContourBuilder builder{mesh, bvh, m_loop_offset, m_loop_length, m_loop_vertices};
+  ContourBuilder builder{mesh, bvh, m_loop_start, m_loop_length, m_loop_vertices};
   bool valid = true;
   builder.build(0, valid);
   m_loop_vertices.shrink_to_fit();

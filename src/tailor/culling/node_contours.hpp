@@ -10,7 +10,8 @@
 
 namespace tailor {
 
-/// For every node of a MeshBvh: whether its faces can be certified by the normal-cone
+/// For every node of a MeshBvh that keeps a cone (the only ones the traversal tests):
+/// whether its faces can be certified by the normal-cone
 /// theorem at all (edge-manifold, consistently oriented, exactly one boundary loop), and
 /// that loop. A patch whose normals all lie within 90° of an axis is immersed in the
 /// plane by the projection along that axis; with one simple boundary loop the immersion
@@ -21,19 +22,23 @@ class NodeContours {
   NodeContours() = default;
   NodeContours(const TriangleMesh& mesh, const MeshBvh& bvh);
 
-  /// True when the node's faces have exactly one consistently oriented boundary loop.
-  bool has_single_loop(Index node) const { return m_loop_length[node] > 0; }
+  /// True when the node keeps a cone and its faces have exactly one consistently oriented
+  /// boundary loop.
+  bool has_single_loop(Index node) const { return !loop(node).empty(); }
   /// Vertices of the node's boundary loop in walking order (empty if none).
   std::span<const Index> loop(Index node) const {
-    return {m_loop_vertices.data() + m_loop_offset[node],
-            static_cast<std::size_t>(m_loop_length[node])};
+    const Index slot = m_slot[node];
+    if (slot < 0) return {};
+    return {m_loop_vertices.data() + m_loop_start[slot],
+            static_cast<std::size_t>(m_loop_length[slot])};
   }
   /// Total number of stored loop vertices (memory use).
   std::size_t stored_vertices() const { return m_loop_vertices.size(); }
 
  private:
-  std::vector<std::int64_t> m_loop_offset;
-  std::vector<Index> m_loop_length;
+  std::vector<Index> m_slot;               // node -> its MeshBvh cone index, or -1
+  std::vector<std::int64_t> m_loop_start;  // per cone index
+  std::vector<Index> m_loop_length;        // per cone index (0: no single loop)
   std::vector<Index> m_loop_vertices;
 };
 

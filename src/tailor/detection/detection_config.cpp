@@ -11,7 +11,7 @@ DetectionConfig DetectionConfig::preset(std::string_view name) {
   // Cumulative, as the rows of the paper's Table 1.
   config.normal_cones = config.contour_test = config.adjacency_culling = false;
   config.feature_assignment = config.primitive_boxes = config.coplanarity_filter = false;
-  config.radial_view = false;
+  config.projection_filter = config.radial_view = false;
   if (name == "basic") return config;
   config.feature_assignment = true;
   if (name == "curtis") return config;
@@ -21,6 +21,7 @@ DetectionConfig DetectionConfig::preset(std::string_view name) {
   if (name == "tang") return config;
   config.primitive_boxes = true;
   config.radial_view = true;
+  config.projection_filter = true;
   if (name == "paper") return config;
   throw InputError(
       fmt::format("unknown method '{}' (expected one of: basic, curtis, tang, paper)", name));

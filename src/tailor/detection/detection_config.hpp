@@ -17,6 +17,7 @@ struct DetectionConfig {
   bool feature_assignment = true;  ///< representative triangles (Curtis et al. 2008)
   bool primitive_boxes = true;     ///< swept boxes of vertex/edge/face pairs
   bool coplanarity_filter = true;  ///< non-coplanarity (DNF) filter
+  bool projection_filter = true;   ///< projection filter (candidates/projection_filter.hpp)
   bool radial_view = true;         ///< radial-view culling where observers are given
   int threads = 0;                 ///< 0: all hardware threads
   /// Copy the step's candidate triangle pairs into DetectionResult (for pictures and

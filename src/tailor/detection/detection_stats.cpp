@@ -11,7 +11,8 @@ namespace tailor {
   X(clusters_certified) X(radial_positive) X(radial_negative) X(radial_undetermined)        \
   X(candidate_triangle_pairs) X(isolated_vf_pairs) X(isolated_ee_pairs)                     \
   X(vf_generated) X(ee_generated) X(vf_after_boxes) X(ee_after_boxes)                       \
-  X(vf_after_filter) X(ee_after_filter) X(vf_tested) X(ee_tested)                           \
+  X(vf_after_filter) X(ee_after_filter) X(vf_after_projection) X(ee_after_projection)       \
+  X(vf_tested) X(ee_tested)                                                                 \
   X(vf_colliding) X(ee_colliding) X(ccd_exact_fallbacks)                                    \
   X(refit_ms) X(traversal_ms) X(pair_generation_ms) X(ccd_ms) X(total_ms)
 // clang-format on

@@ -1,6 +1,5 @@
 #include "tailor/detection/exact_pair_tests.hpp"
 
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -10,10 +9,9 @@
 namespace tailor {
 namespace {
 
-struct ThreadOutput {
-  CollisionSet collisions;
-  std::int64_t exact = 0;
-};
+// Pairs per task: large enough to amortise scheduling, small enough to balance the
+// uneven cost of queries (most are cheap, a few reach the exact path).
+constexpr std::size_t kGrain = 256;
 
 EdgeEdgeCollision make_edge_edge(const EdgeArray& edges, Index e1, Index e2, double toi) {
   // Edges are stored (a, b) with a < b; order the two edges by their vertex ids.
@@ -33,16 +31,22 @@ void sort_unique(std::vector<T>& items) {
 
 }  // namespace
 
-CollisionSet test_pairs_exactly(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
-                                std::span<const VertexFacePair> vertex_face,
-                                std::span<const EdgeEdgePair> edge_edge,
-                                std::int64_t* exact_fallbacks) {
+void ExactPairTester::begin_step() {
+  for (ThreadOutput& out : m_outputs) {
+    out.collisions.vertex_face.clear();
+    out.collisions.edge_edge.clear();
+    out.exact = 0;
+  }
+}
+
+void ExactPairTester::test(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
+                           std::span<const VertexFacePair> vertex_face,
+                           std::span<const EdgeEdgePair> edge_edge) {
   const FaceArray& faces = mesh.faces();
   const EdgeArray& edges = mesh.edges();
-  tbb::enumerable_thread_specific<ThreadOutput> outputs;
   tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, vertex_face.size(), 256), [&](const auto& range) {
-        ThreadOutput& out = outputs.local();
+      tbb::blocked_range<std::size_t>(0, vertex_face.size(), kGrain), [&](const auto& range) {
+        ThreadOutput& out = m_outputs.local();
         for (std::size_t i = range.begin(); i < range.end(); ++i) {
           const auto [v, f] = vertex_face[i];
           const Index a = faces(f, 0), b = faces(f, 1), c = faces(f, 2);
@@ -53,8 +57,8 @@ CollisionSet test_pairs_exactly(const TriangleMesh& mesh, const Positions& x0, c
         }
       });
   tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, edge_edge.size(), 256), [&](const auto& range) {
-        ThreadOutput& out = outputs.local();
+      tbb::blocked_range<std::size_t>(0, edge_edge.size(), kGrain), [&](const auto& range) {
+        ThreadOutput& out = m_outputs.local();
         for (std::size_t i = range.begin(); i < range.end(); ++i) {
           const auto [e1, e2] = edge_edge[i];
           const Index a = edges(e1, 0), b = edges(e1, 1);
@@ -67,19 +71,43 @@ CollisionSet test_pairs_exactly(const TriangleMesh& mesh, const Positions& x0, c
           }
         }
       });
+}
+
+CollisionSet ExactPairTester::take_collisions() {
+  // Append into the largest buffer, moved out; the others are released.
   CollisionSet all;
-  std::int64_t exact = 0;
-  for (ThreadOutput& out : outputs) {
-    all.vertex_face.insert(all.vertex_face.end(), out.collisions.vertex_face.begin(),
-                           out.collisions.vertex_face.end());
-    all.edge_edge.insert(all.edge_edge.end(), out.collisions.edge_edge.begin(),
-                         out.collisions.edge_edge.end());
-    exact += out.exact;
-  }
-  sort_unique(all.vertex_face);
-  sort_unique(all.edge_edge);
-  if (exact_fallbacks != nullptr) *exact_fallbacks = exact;
+  auto gather = [&](auto member) {
+    auto& result = all.*member;
+    for (ThreadOutput& out : m_outputs) {
+      auto& mine = out.collisions.*member;
+      if (mine.size() > result.size()) std::swap(mine, result);
+    }
+    for (ThreadOutput& out : m_outputs) {
+      auto& mine = out.collisions.*member;
+      result.insert(result.end(), mine.begin(), mine.end());
+      std::remove_reference_t<decltype(mine)>().swap(mine);
+    }
+    sort_unique(result);
+  };
+  gather(&CollisionSet::vertex_face);
+  gather(&CollisionSet::edge_edge);
   return all;
+}
+
+std::int64_t ExactPairTester::exact_fallbacks() const {
+  std::int64_t total = 0;
+  for (const ThreadOutput& out : m_outputs) total += out.exact;
+  return total;
+}
+
+CollisionSet test_pairs_exactly(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
+                                std::span<const VertexFacePair> vertex_face,
+                                std::span<const EdgeEdgePair> edge_edge,
+                                std::int64_t* exact_fallbacks) {
+  ExactPairTester tester;
+  tester.test(mesh, x0, x1, vertex_face, edge_edge);
+  if (exact_fallbacks != nullptr) *exact_fallbacks = tester.exact_fallbacks();
+  return tester.take_collisions();
 }
 
 }  // namespace tailor

@@ -2,6 +2,8 @@
 /// @file
 /// The last stage: candidate VF/EE pairs through the exact CCD.
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include <cstdint>
 #include <span>
 
@@ -11,9 +13,33 @@
 
 namespace tailor {
 
-/// Runs the exact CCD on every pair (parallel) and returns the colliding ones, sorted and
-/// without duplicates, so the result does not depend on the order of the pairs or on
-/// the thread count. `exact_fallbacks` receives how many queries the exact path decided.
+/// Runs the exact CCD (vertex_face_ccd / edge_edge_ccd) on batches of candidate pairs in
+/// parallel blocks and gathers the collisions of a step in per-thread buffers that keep
+/// their memory between steps.
+class ExactPairTester {
+ public:
+  /// Starts a step: no collisions, no counts.
+  void begin_step();
+  /// Tests every pair of one batch (parallel); may be called any number of times a step.
+  void test(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
+            std::span<const VertexFacePair> vertex_face, std::span<const EdgeEdgePair> edge_edge);
+  /// Hands over the collisions since begin_step(), sorted and without duplicates, so the
+  /// result does not depend on the batches, their order or the thread count. The
+  /// per-thread buffers are moved into the result (it is the step's output), not copied.
+  CollisionSet take_collisions();
+  /// Queries since begin_step() that the exact path decided.
+  std::int64_t exact_fallbacks() const;
+
+ private:
+  struct ThreadOutput {
+    CollisionSet collisions;
+    std::int64_t exact = 0;
+  };
+  tbb::enumerable_thread_specific<ThreadOutput> m_outputs;
+};
+
+/// One batch through ExactPairTester: the colliding pairs, sorted and without duplicates.
+/// `exact_fallbacks` receives how many queries the exact path decided.
 CollisionSet test_pairs_exactly(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
                                 std::span<const VertexFacePair> vertex_face,
                                 std::span<const EdgeEdgePair> edge_edge,

@@ -34,6 +34,10 @@ void check_positions(const TriangleMesh& mesh, const Positions& x, const char* n
 }  // namespace
 
 struct SelfCollisionDetector::Impl {
+  // Candidate triangle pairs per round of low-level culling and exact CCD: bounds the
+  // memory of the VF/EE pairs of a round (at most 15 per CTP) whatever the preset.
+  static constexpr std::size_t kRoundTrianglePairs = std::size_t{1} << 17;
+
   const TriangleMesh& mesh;
   DetectionConfig config;
   tbb::task_arena arena;
@@ -43,16 +47,17 @@ struct SelfCollisionDetector::Impl {
   RadialViewClusters clusters;
   bool use_radial_view = false;
   IsolatedSet isolated;
+  // Per-thread buffers reused from step to step.
+  CandidateTraversal traversal;
   PrimitivePairGenerator generator;
-  std::vector<TrianglePair> ctps;
-  std::vector<VertexFacePair> vf_pairs;
-  std::vector<EdgeEdgePair> ee_pairs;
+  ExactPairTester tester;
 
   Impl(const TriangleMesh& mesh_, const Positions& x_build, DetectionConfig config_,
        std::vector<std::vector<Index>> section_loops)
       : mesh(mesh_),
         config(config_),
-        arena(config_.threads > 0 ? config_.threads : tbb::task_arena::automatic) {
+        arena(config_.threads > 0 ? config_.threads : tbb::task_arena::automatic),
+        traversal(mesh_) {
     check_positions(mesh, x_build, "the build frame");
     use_radial_view = config.radial_view && !section_loops.empty();
     arena.execute([&] {
@@ -73,6 +78,82 @@ struct SelfCollisionDetector::Impl {
     });
   }
 
+  void high_level(const Positions& x0, const Positions& x1, DetectionStats& stats) {
+    traversal.clear();
+    const TraversalOptions options{config.normal_cones, config.contour_test,
+                                   config.adjacency_culling};
+    std::vector<char> certified(bvhs.size(), 0);
+    if (use_radial_view) {
+      RadialViewCounts radial;
+      certified = clusters.certify(x0, x1, radial);
+      stats.clusters_certified = radial.clusters_certified;
+      stats.radial_positive = radial.triangles_positive;
+      stats.radial_negative = radial.triangles_negative;
+      stats.radial_undetermined = radial.triangles_undetermined;
+    }
+    for (std::size_t c = 0; c < bvhs.size(); ++c) {
+      if (!certified[c]) traversal.self(bvhs[c], contours[c], {x0, x1}, options);
+      for (std::size_t d = c + 1; d < bvhs.size(); ++d) traversal.pair(bvhs[c], bvhs[d], options);
+    }
+    const TraversalCounts counts = traversal.counts();
+    stats.node_pairs_visited = counts.node_pairs_visited;
+    stats.nodes_culled_by_cones = counts.nodes_culled_by_cones;
+    stats.contour_tests = counts.contour_tests;
+    stats.contour_tests_failed = counts.contour_tests_failed;
+    stats.candidate_triangle_pairs = traversal.size();
+    stats.isolated_vf_pairs = static_cast<std::int64_t>(isolated.vertex_face.size());
+    stats.isolated_ee_pairs = static_cast<std::int64_t>(isolated.edge_edge.size());
+  }
+
+  // One round: the pairs the generator holds through the exact CCD.
+  void test_round(const Positions& x0, const Positions& x1, DetectionStats& stats) {
+    const auto start = Clock::now();
+    const auto vf_blocks = generator.vertex_face_blocks();
+    const auto ee_blocks = generator.edge_edge_blocks();
+    for (std::size_t b = 0; b < std::max(vf_blocks.size(), ee_blocks.size()); ++b) {
+      tester.test(mesh, x0, x1,
+                  b < vf_blocks.size() ? vf_blocks[b] : std::span<const VertexFacePair>{},
+                  b < ee_blocks.size() ? ee_blocks[b] : std::span<const EdgeEdgePair>{});
+    }
+    stats.ccd_ms += elapsed_ms(start);
+  }
+
+  // Low-level culling and exact CCD, in rounds of at most kRoundTrianglePairs CTPs.
+  void low_level_and_ccd(const Positions& x0, const Positions& x1, DetectionStats& stats) {
+    const LowLevelOptions options{config.feature_assignment, config.primitive_boxes,
+                                  config.coplanarity_filter, config.projection_filter,
+                                  config.adjacency_culling};
+    generator.begin_step();
+    tester.begin_step();
+    auto start = Clock::now();
+    generator.add_isolated(isolated, x0, x1, options);
+    stats.pair_generation_ms += elapsed_ms(start);
+    test_round(x0, x1, stats);
+    for (std::span<const TrianglePair> block : traversal.blocks()) {
+      for (std::size_t first = 0; first < block.size(); first += kRoundTrianglePairs) {
+        start = Clock::now();
+        generator.clear_pairs();
+        generator.add_triangle_pairs(
+            block.subspan(first, std::min(kRoundTrianglePairs, block.size() - first)), x0, x1,
+            options);
+        stats.pair_generation_ms += elapsed_ms(start);
+        test_round(x0, x1, stats);
+      }
+    }
+    const LowLevelCounts low = generator.counts();
+    stats.vf_generated = low.vf_generated;
+    stats.ee_generated = low.ee_generated;
+    stats.vf_after_boxes = low.vf_after_boxes;
+    stats.ee_after_boxes = low.ee_after_boxes;
+    stats.vf_after_filter = low.vf_after_filter;
+    stats.ee_after_filter = low.ee_after_filter;
+    stats.vf_after_projection = low.vf_after_projection;
+    stats.ee_after_projection = low.ee_after_projection;
+    stats.vf_tested = low.vf_after_projection;
+    stats.ee_tested = low.ee_after_projection;
+    stats.ccd_exact_fallbacks = tester.exact_fallbacks();
+  }
+
   DetectionResult detect(const Positions& x0, const Positions& x1) {
     check_positions(mesh, x0, "x0");
     check_positions(mesh, x1, "x1");
@@ -83,57 +164,20 @@ struct SelfCollisionDetector::Impl {
       for (MeshBvh& bvh : bvhs) bvh.refit(x0, x1, config.normal_cones);
       stats.refit_ms = elapsed_ms(start);
 
-      auto stage = Clock::now();
-      ctps.clear();
-      TraversalCounts traversal;
-      const TraversalOptions options{config.normal_cones, config.contour_test,
-                                     config.adjacency_culling};
-      std::vector<char> certified(bvhs.size(), 0);
-      if (use_radial_view) {
-        RadialViewCounts radial;
-        certified = clusters.certify(x0, x1, radial);
-        stats.clusters_certified = radial.clusters_certified;
-        stats.radial_positive = radial.triangles_positive;
-        stats.radial_negative = radial.triangles_negative;
-        stats.radial_undetermined = radial.triangles_undetermined;
-      }
-      for (std::size_t c = 0; c < bvhs.size(); ++c) {
-        if (!certified[c]) {
-          self_traversal(mesh, bvhs[c], contours[c], {x0, x1}, options, ctps, traversal);
-        }
-        for (std::size_t d = c + 1; d < bvhs.size(); ++d) {
-          pair_traversal(mesh, bvhs[c], bvhs[d], options, ctps, traversal);
-        }
-      }
+      const auto stage = Clock::now();
+      high_level(x0, x1, stats);
       stats.traversal_ms = elapsed_ms(stage);
-      stats.node_pairs_visited = traversal.node_pairs_visited;
-      stats.nodes_culled_by_cones = traversal.nodes_culled_by_cones;
-      stats.contour_tests = traversal.contour_tests;
-      stats.contour_tests_failed = traversal.contour_tests_failed;
-      stats.candidate_triangle_pairs = static_cast<std::int64_t>(ctps.size());
-      if (config.keep_candidate_pairs) result.candidate_triangle_pairs = ctps;
-      stats.isolated_vf_pairs = static_cast<std::int64_t>(isolated.vertex_face.size());
-      stats.isolated_ee_pairs = static_cast<std::int64_t>(isolated.edge_edge.size());
+      if (config.keep_candidate_pairs) {
+        for (std::span<const TrianglePair> block : traversal.blocks()) {
+          result.candidate_triangle_pairs.insert(result.candidate_triangle_pairs.end(),
+                                                 block.begin(), block.end());
+        }
+      }
 
-      stage = Clock::now();
-      LowLevelCounts low;
-      const LowLevelOptions low_options{config.feature_assignment, config.primitive_boxes,
-                                        config.coplanarity_filter, config.adjacency_culling};
-      generator.generate(ctps, isolated, x0, x1, low_options, vf_pairs, ee_pairs, low);
-      stats.pair_generation_ms = elapsed_ms(stage);
-      stats.vf_generated = low.vf_generated;
-      stats.ee_generated = low.ee_generated;
-      stats.vf_after_boxes = low.vf_after_boxes;
-      stats.ee_after_boxes = low.ee_after_boxes;
-      stats.vf_after_filter = low.vf_after_filter;
-      stats.ee_after_filter = low.ee_after_filter;
-      stats.vf_tested = static_cast<std::int64_t>(vf_pairs.size());
-      stats.ee_tested = static_cast<std::int64_t>(ee_pairs.size());
-
-      stage = Clock::now();
-      result.collisions =
-          test_pairs_exactly(mesh, x0, x1, vf_pairs, ee_pairs, &stats.ccd_exact_fallbacks);
-      stats.ccd_ms = elapsed_ms(stage);
+      low_level_and_ccd(x0, x1, stats);
+      const auto gather = Clock::now();
+      result.collisions = tester.take_collisions();
+      stats.ccd_ms += elapsed_ms(gather);
       stats.vf_colliding = static_cast<std::int64_t>(result.collisions.vertex_face.size());
       stats.ee_colliding = static_cast<std::int64_t>(result.collisions.edge_edge.size());
       stats.total_ms = elapsed_ms(start);

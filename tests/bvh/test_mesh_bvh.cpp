@@ -1,0 +1,223 @@
+// The mesh BVH: its layout, float boxes that contain the swept triangles, and continuous
+// normal cones that hold every normal of every face below them over the whole step
+// (checked in exact rational arithmetic at sampled times).
+
+#include "support/sanitized.hpp"
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <random>
+
+#include "support/random_steps.hpp"
+#include "tailor/bvh/bvh_layout.hpp"
+#include "tailor/bvh/float_box.hpp"
+#include "tailor/bvh/mesh_bvh.hpp"
+#include "tailor/mesh/procedural_steps.hpp"
+
+namespace tailor {
+namespace {
+
+using tailor::testing::sanitized;
+
+TEST(FloatBox, RoundsOutwardByAFewUlps) {
+  const double values[] = {0.0,    -0.0,   1.0,   0.1,    -0.1,       1e-300, -1e-300, 1e300,
+                           -1e300, 3.0e38, 1e-45, -1e-40, 123456.789, 0.5,    -0.25};
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  for (double x : values) {
+    const float low = float_at_most(x), high = float_at_least(x);
+    EXPECT_LE(static_cast<double>(low), x) << x;
+    EXPECT_GE(static_cast<double>(high), x) << x;
+    // Close: three steps toward x pass it (or x is beyond the float range).
+    float above = low, below = high;
+    for (int i = 0; i < 3; ++i)
+      above = std::nextafter(above, inf), below = std::nextafter(below, -inf);
+    if (std::fabs(x) < 3.4e38) {
+      EXPECT_GT(static_cast<double>(above), x) << x;
+      EXPECT_LT(static_cast<double>(below), x) << x;
+    }
+  }
+  EXPECT_EQ(float_at_most(1e300), std::numeric_limits<float>::max());
+  EXPECT_EQ(float_at_least(1e300), inf);
+  EXPECT_EQ(float_at_most(-1e300), -inf);
+}
+
+TEST(BvhLayout, IsAPreOrderTreeHoldingEveryPrimitiveOnce) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  std::vector<Vec3> centers(1000);
+  for (Vec3& c : centers) c = {uniform(rng), uniform(rng), uniform(rng)};
+  const BvhLayout layout = build_median_split_layout(centers);
+  ASSERT_EQ(layout.num_nodes(), 1999);
+  EXPECT_EQ(layout.count[0], 1000);
+  std::vector<int> seen(centers.size(), 0);
+  for (Index node = 0; node < layout.num_nodes(); ++node) {
+    if (layout.is_leaf(node)) {
+      ++seen[layout.right[node]];
+      continue;
+    }
+    const Index left = node + 1, right = layout.right[node];
+    // The left subtree fills the ids up to the right child.
+    EXPECT_EQ(right, left + 2 * layout.count[left] - 1);
+    EXPECT_EQ(layout.count[node], layout.count[left] + layout.count[right]);
+    EXPECT_GE(layout.count[left], layout.count[node] / 2);
+  }
+  for (int s : seen) EXPECT_EQ(s, 1);
+}
+
+// Faces under a node.
+void faces_under(const MeshBvh& bvh, Index node, std::vector<Index>& out) {
+  if (bvh.is_leaf(node)) {
+    out.push_back(bvh.leaf_face(node));
+    return;
+  }
+  faces_under(bvh, bvh.left(node), out);
+  faces_under(bvh, bvh.right(node), out);
+}
+
+bool box_holds(const FloatBox& box, const Positions& x, Index v) {
+  for (int k = 0; k < 3; ++k) {
+    if (!(box.min[k] <= x(v, k) && x(v, k) <= box.max[k])) return false;
+  }
+  return true;
+}
+
+// Exact check that n(t) of face f lies within the cone: n·axis > 0 and
+// (n·axis)² >= cos_bound²·|n|²·|axis|² at t = k/8 (a zero normal holds no direction).
+using Q3 = std::array<mpq_class, 3>;
+
+Q3 exact_point(const Positions& x0, const Positions& x1, Index v, const mpq_class& t) {
+  Q3 p;
+  for (int k = 0; k < 3; ++k) p[k] = mpq_class(x0(v, k)) + t * (mpq_class(x1(v, k)) - x0(v, k));
+  return p;
+}
+
+::testing::AssertionResult cone_holds_face(const NormalCone& cone, const TriangleMesh& mesh,
+                                           const Positions& x0, const Positions& x1, Index f) {
+  for (int step = 0; step <= 8; ++step) {
+    const mpq_class t(step, 8);
+    const Q3 a = exact_point(x0, x1, mesh.faces()(f, 0), t);
+    const Q3 b = exact_point(x0, x1, mesh.faces()(f, 1), t);
+    const Q3 c = exact_point(x0, x1, mesh.faces()(f, 2), t);
+    Q3 u, v;
+    for (int k = 0; k < 3; ++k) u[k] = b[k] - a[k], v[k] = c[k] - a[k];
+    const Q3 n = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const mpq_class nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    if (nn == 0) continue;
+    mpq_class dot = 0, aa = 0;
+    for (int k = 0; k < 3; ++k) {
+      dot += n[k] * mpq_class(cone.axis[k]);
+      aa += mpq_class(cone.axis[k]) * mpq_class(cone.axis[k]);
+    }
+    const mpq_class cos_bound(cone.cos_bound);
+    if (dot <= 0 || dot * dot < cos_bound * cos_bound * nn * aa) {
+      return ::testing::AssertionFailure() << "face " << f << " at t=" << step << "/8";
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+
+struct BvhCase {
+  std::string name;
+  MeshData mesh;
+  Positions x1;
+};
+
+std::vector<BvhCase> bvh_cases() {
+  std::vector<BvhCase> cases;
+  const int resolution = sanitized() ? 8 : 16;
+  for (auto& step : testing::make_random_steps(5, resolution)) {
+    cases.push_back({step.name, std::move(step.mesh), std::move(step.x1)});
+  }
+  // A flat patch that turns through 100 and 170 degrees during the step: its normals
+  // span that angle, so the root cone is under 90 degrees only if merging is tight.
+  for (double degrees : {100.0, 170.0}) {
+    BvhCase turning{
+        "turn" + std::to_string(static_cast<int>(degrees)), make_grid(6, 6, 1.0, 1.0), {}};
+    const double angle = degrees * std::numbers::pi / 180;
+    turning.x1 = turning.mesh.vertices;
+    for (Eigen::Index i = 0; i < turning.x1.rows(); ++i) {
+      const double y = turning.mesh.vertices(i, 1);
+      turning.x1(i, 1) = y * std::cos(angle);
+      turning.x1(i, 2) = y * std::sin(angle);
+    }
+    cases.push_back(std::move(turning));
+  }
+  const ProceduralStep folded = make_folded_cloth_on_sphere(sanitized() ? 300 : 1200);
+  cases.push_back({"folded", {folded.x0, folded.faces}, folded.x1});
+  return cases;
+}
+
+TEST(MeshBvh, RefitBoxesHoldTheSweptTrianglesAndConesHoldEveryNormal) {
+  for (const BvhCase& c : bvh_cases()) {
+    const TriangleMesh mesh(static_cast<Index>(c.mesh.vertices.rows()), c.mesh.faces);
+    MeshBvh bvh(mesh, c.mesh.vertices);
+    bvh.refit(c.mesh.vertices, c.x1, true);
+    ASSERT_EQ(bvh.num_nodes(), 2 * mesh.num_faces() - 1) << c.name;
+    Index cones_under_90 = 0;
+    for (Index node = 0; node < bvh.num_nodes(); ++node) {
+      std::vector<Index> faces;
+      faces_under(bvh, node, faces);
+      ASSERT_EQ(static_cast<Index>(faces.size()), bvh.size(node)) << c.name;
+      for (Index f : faces) {
+        for (int k = 0; k < 3; ++k) {
+          const Index v = mesh.faces()(f, k);
+          ASSERT_TRUE(box_holds(bvh.box(node), c.mesh.vertices, v) &&
+                      box_holds(bvh.box(node), c.x1, v))
+              << c.name << " node " << node << " face " << f;
+        }
+      }
+      if (bvh.is_leaf(node) || !bvh.cone(node).is_under_90_degrees()) continue;
+      ++cones_under_90;
+      // Exact checks are slow: every face of small nodes, a sample of large ones.
+      const std::size_t stride = std::max<std::size_t>(1, faces.size() / 16);
+      for (std::size_t i = 0; i < faces.size(); i += stride) {
+        ASSERT_TRUE(cone_holds_face(bvh.cone(node), mesh, c.mesh.vertices, c.x1, faces[i]))
+            << c.name << " node " << node;
+      }
+    }
+    if (c.name == "turn100" || c.name == "turn170") {
+      EXPECT_TRUE(bvh.cone(0).is_under_90_degrees()) << c.name;
+    } else if (c.name == "folded" || c.name.starts_with("sphere")) {
+      // Normals in opposite directions: no cone under 90 degrees holds them.
+      EXPECT_FALSE(bvh.cone(0).is_under_90_degrees()) << c.name;
+    }
+    if (c.name != "sphere_random") {
+      EXPECT_GT(cones_under_90, 0) << c.name;
+    }
+  }
+}
+
+TEST(NormalCone, MergeHoldsBothAndIsTightForTwoDirections) {
+  std::mt19937 rng(11);
+  std::normal_distribution<double> normal;
+  for (int trial = 0; trial < 2000; ++trial) {
+    // Two exact directions as degenerate moving triangles of constant normal.
+    auto random_unit = [&] {
+      Vec3 v(normal(rng), normal(rng), normal(rng));
+      return Vec3(v.normalized());
+    };
+    const Vec3 d1 = random_unit(), d2 = random_unit();
+    auto cone_of = [](const Vec3& d) {
+      const Vec3 e1 = d.unitOrthogonal(), e2 = d.cross(e1);
+      return continuous_normal_cone(Vec3::Zero(), e1, e2, Vec3::Zero(), e1, e2);
+    };
+    const NormalCone c1 = cone_of(d1), c2 = cone_of(d2);
+    ASSERT_TRUE(c1.is_under_90_degrees() && c2.is_under_90_degrees());
+    const NormalCone merged = c1.merged(c2);
+    const double half_angle = 0.5 * std::acos(std::clamp(d1.dot(d2), -1.0, 1.0));
+    if (half_angle < 0.49 * std::numbers::pi) {
+      ASSERT_TRUE(merged.is_under_90_degrees()) << trial;
+      // Tight: the bound is the half-angle between the two, up to rounding and to the
+      // ~2^-21 rad a cone of near-zero angle keeps (its cosine bound is 1 - 2^-43).
+      EXPECT_NEAR(merged.cos_bound, std::cos(half_angle), 2e-6) << trial;
+    } else if (half_angle > 0.51 * std::numbers::pi) {
+      EXPECT_FALSE(merged.is_under_90_degrees()) << trial;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tailor
