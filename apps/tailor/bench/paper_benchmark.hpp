@@ -46,7 +46,7 @@ struct PaperBenchmark {
   /// set, no radial view), the ratios the paper claims and the classification shares.
   std::string fig1_markdown() const;
   /// Whether every stage of Fig. 1 lowers the mean CTPs (basic > + normal cones >
-  /// + radial view > + isolated set).
+  /// + radial view > + isolated set), or had nothing left to lower (a mean of 0).
   bool fig1_stages_decrease() const;
   /// Table 1 as CSV: method,vf,ee,detect_ms,step_ms,fps.
   std::string table1_csv() const;
