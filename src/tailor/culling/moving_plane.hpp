@@ -11,13 +11,17 @@ namespace tailor {
 /// Plane through `a(t), q(t), r(t)`; side(p) is the exact sign of det(p-a, q-a, r-a)(t)
 /// over the step, i.e. coplanarity_sign(a, p, q, r), for every input.
 ///
-/// Why it is the same test. coplanarity_bernstein_double() evaluates the blossom values
-/// from the cross products of its second and third difference vectors dotted with the
-/// first; here the first is p - a and the crossed pair is (q - a, r - a), which do not
-/// depend on p: they are computed once, in the same expression order, and side() finishes
-/// each Bernstein coefficient and its error bound exactly as that function does (same
-/// rounding count, same 2^-49 bound, same range guard). A coefficient the bound cannot
-/// decide, or an input out of the guarded range, falls back to coplanarity_sign() itself.
+/// Why it is the same test. coplanarity_bernstein_double() evaluates the four blossom
+/// values as sums of dot products of its first difference vector with cross products of
+/// the other two; here the first is u = p - a and the crossed pair is v = q - a,
+/// w = r - a, which do not depend on p: the cross products are computed once, and side()
+/// evaluates each value with the same expressions (same rounding count, at most 10
+/// roundings along any term). Its error bound is 16u times a magnitude no smaller than
+/// that function's: the sum of |u_k| |v_l w_m| over the terms is at most
+/// ‖u‖₁ · 2‖v‖∞‖w‖∞ per determinant, so the bound only widens (and the slack between
+/// 10u and 16u covers the few roundings of the norms). The same range guard applies. A
+/// coefficient the bound cannot decide, or an input out of the guarded range, falls back
+/// to coplanarity_sign() itself, which decides exactly.
 class MovingPlane {
  public:
   MovingPlane() = default;
@@ -32,9 +36,9 @@ class MovingPlane {
   Vec3 m_a0 = Vec3::Zero(), m_q0 = Vec3::Zero(), m_r0 = Vec3::Zero();
   Vec3 m_a1 = Vec3::Zero(), m_q1 = Vec3::Zero(), m_r1 = Vec3::Zero();
   bool m_in_range = true;
-  // v_i × w_j and the same on absolute values, v = q - a, w = r - a.
-  double m_c00[3]{}, m_c11[3]{}, m_c01[3]{}, m_c10[3]{};
-  double m_m00[3]{}, m_m11[3]{}, m_m01[3]{}, m_m10[3]{};
+  // v_i × w_j (v = q - a, w = r - a), and 2^-49 · 2‖v_i‖∞‖w_j‖∞ for the error bounds.
+  Vec3 m_c00 = Vec3::Zero(), m_c11 = Vec3::Zero(), m_c01 = Vec3::Zero(), m_c10 = Vec3::Zero();
+  double m_e00 = 0, m_e11 = 0, m_e01 = 0, m_e10 = 0;
 };
 
 }  // namespace tailor

@@ -68,7 +68,8 @@ RadialViewCulling::RadialViewCulling(const TriangleMesh& mesh, const Positions& 
   m_face_planes.resize(static_cast<std::size_t>(mesh.num_faces()));
 }
 
-RadialViewCounts RadialViewCulling::classify(const Positions& x0, const Positions& x1) {
+RadialViewCounts RadialViewCulling::classify(const Positions& x0, const Positions& x1,
+                                             bool find_clean) {
   m_x0 = &x0;
   m_x1 = &x1;
   const TriangleMesh& mesh = m_clusters.mesh();
@@ -79,7 +80,7 @@ RadialViewCounts RadialViewCulling::classify(const Positions& x0, const Position
                                    x1.row(v[1]), x1.row(v[2]));
   });
   const Index n = m_clusters.num_clusters();
-  tbb::parallel_for(Index{0}, n, [&](Index c) { classify_cluster(c, x0, x1); });
+  tbb::parallel_for(Index{0}, n, [&](Index c) { classify_cluster(c, x0, x1, find_clean); });
   std::fill(m_clean_mask.begin(), m_clean_mask.end(), 0);
   RadialViewCounts counts;
   for (Index c = 0; c < n; ++c) {
@@ -98,7 +99,8 @@ RadialViewCounts RadialViewCulling::classify(const Positions& x0, const Position
   return counts;
 }
 
-void RadialViewCulling::classify_cluster(Index c, const Positions& x0, const Positions& x1) {
+void RadialViewCulling::classify_cluster(Index c, const Positions& x0, const Positions& x1,
+                                         bool find_clean) {
   ClusterState& state = m_state[c];
   state.counts = {};
   state.face_raw.clear();
@@ -198,6 +200,7 @@ void RadialViewCulling::classify_cluster(Index c, const Positions& x0, const Pos
     counts.faces_clean = static_cast<std::int64_t>(faces.size());
     return;
   }
+  if (!find_clean) return;
 
   // View cones of the faces (from directions to the vertices, shared by the faces around
   // each vertex) and of the ghost triangles.
@@ -275,53 +278,78 @@ void RadialViewCulling::find_clean_faces(Index c, const std::vector<std::size_t>
   }
 }
 
-bool RadialViewCulling::edge_plane_separates(const ClusterState& state, Index f, int side,
-                                             Index g) const {
+namespace {
+
+// The corners of one face at t = 0 and t = 1.
+struct FaceCorners {
+  Vec3 at0[3], at1[3];
+};
+
+FaceCorners face_corners(const TriangleMesh& mesh, Index f, const Positions& x0,
+                         const Positions& x1) {
+  FaceCorners c;
+  for (int k = 0; k < 3; ++k) {
+    c.at0[k] = x0.row(mesh.faces()(f, k));
+    c.at1[k] = x1.row(mesh.faces()(f, k));
+  }
+  return c;
+}
+
+// Rule (5) of the header: some edge (a, b) of `f`, whose third vertex lies on side `side`
+// of the plane through o, a, b over the step, has the three corners of `g` strictly on
+// the other side over the whole step.
+bool edge_plane_separates(const FaceCorners& f, int side, const FaceCorners& g, const Vec3& o0,
+                          const Vec3& o1) {
   if (side == 0) return false;
-  const Positions& x0 = *m_x0;
-  const Positions& x1 = *m_x1;
-  const TriangleMesh& mesh = m_clusters.mesh();
-  const auto vf = mesh.faces().row(f);
-  const auto vg = mesh.faces().row(g);
-  const Vec3& o0 = state.observer0;
-  const Vec3& o1 = state.observer1;
-  Vec3 p0[3], p1[3];
-  for (int j = 0; j < 3; ++j) {
-    p0[j] = x0.row(vg[j]);
-    p1[j] = x1.row(vg[j]);
+  // Plain double first, relative to the observer: det(b-a, p-a, o-a) = -((a-o)×(b-o))·(p-o).
+  // Its values at t = 0 and t = 1 are the end Bernstein coefficients; rounding here can
+  // only keep a pair, the certificate below decides.
+  Vec3 rf0[3], rg0[3];
+  for (int k = 0; k < 3; ++k) {
+    rf0[k] = f.at0[k] - o0;
+    rg0[k] = g.at0[k] - o0;
   }
   for (int k = 0; k < 3; ++k) {
-    const Index a = vf[k], b = vf[(k + 1) % 3];
-    const Vec3 a0 = x0.row(a), b0 = x0.row(b), a1 = x1.row(a), b1 = x1.row(b);
-    // det(b-a, p-a, o-a) = ((o-a)×(b-a))·(p-a). Plain double first: its end values are
-    // the end Bernstein coefficients, and rounding here can only keep a pair.
-    const Vec3 m0 = (o0 - a0).cross(b0 - a0), m1 = (o1 - a1).cross(b1 - a1);
-    bool maybe = true;
-    for (int j = 0; j < 3 && maybe; ++j) {
-      maybe = m0.dot(p0[j] - a0) * side < 0 && m1.dot(p1[j] - a1) * side < 0;
+    const int l = (k + 1) % 3;
+    const Vec3 n0 = rf0[k].cross(rf0[l]);
+    if (!(n0.dot(rg0[0]) * side > 0 && n0.dot(rg0[1]) * side > 0 && n0.dot(rg0[2]) * side > 0)) {
+      continue;
     }
+    const Vec3 n1 = (f.at1[k] - o1).cross(f.at1[l] - o1);
+    bool maybe = true;
+    for (int j = 0; j < 3 && maybe; ++j) maybe = n1.dot(g.at1[j] - o1) * side > 0;
     if (!maybe) continue;
-    // Certified: det(b-a, p-a, o-a) = det(p-a, o-a, b-a), the side of p of the plane
-    // through a, o, b.
-    const MovingPlane plane(a0, o0, b0, a1, o1, b1);
+    // Certified on the given doubles: det(b-a, p-a, o-a) = det(p-a, o-a, b-a), the side
+    // of p of the plane through a, o, b.
+    const MovingPlane plane(f.at0[k], o0, f.at0[l], f.at1[k], o1, f.at1[l]);
     bool separated = true;
     for (int j = 0; j < 3 && separated; ++j) {
-      separated = static_cast<int>(plane.side(p0[j], p1[j])) == -side;
+      separated = static_cast<int>(plane.side(g.at0[j], g.at1[j])) == -side;
     }
     if (separated) return true;
   }
   return false;
 }
 
+}  // namespace
+
 bool RadialViewCulling::pair_culled(Index f, Index g) const {
   const std::uint64_t common = m_clusters.member_mask(f) & m_clusters.member_mask(g);
+  if (common == 0) return false;
   if (((m_clean_mask[f] | m_clean_mask[g]) & common) != 0) return true;
+  const TriangleMesh& mesh = m_clusters.mesh();
+  const FaceCorners cf = face_corners(mesh, f, *m_x0, *m_x1);
+  const FaceCorners cg = face_corners(mesh, g, *m_x0, *m_x1);
   for (std::uint64_t rest = common; rest != 0; rest &= rest - 1) {
     const auto c = static_cast<Index>(std::countr_zero(rest));
     const ClusterState& state = m_state[c];
     if (state.face_raw.empty()) continue;
-    if (edge_plane_separates(state, f, state.face_raw[m_slot[c][f]], g)) return true;
-    if (edge_plane_separates(state, g, state.face_raw[m_slot[c][g]], f)) return true;
+    const Vec3& o0 = state.observer0;
+    const Vec3& o1 = state.observer1;
+    if (edge_plane_separates(cf, state.face_raw[m_slot[c][f]], cg, o0, o1) ||
+        edge_plane_separates(cg, state.face_raw[m_slot[c][g]], cf, o0, o1)) {
+      return true;
+    }
   }
   return false;
 }
@@ -344,8 +372,9 @@ std::int64_t RadialViewCulling::cull(std::vector<TrianglePair>& pairs) const {
 }
 
 RadialViewCounts RadialViewCulling::classify_and_cull(const Positions& x0, const Positions& x1,
-                                                      std::vector<TrianglePair>& pairs) {
-  RadialViewCounts counts = classify(x0, x1);
+                                                      std::vector<TrianglePair>& pairs,
+                                                      bool find_clean) {
+  RadialViewCounts counts = classify(x0, x1, find_clean);
   counts.pairs_culled = cull(pairs);
   return counts;
 }

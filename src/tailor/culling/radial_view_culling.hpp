@@ -89,7 +89,14 @@ class RadialViewCulling {
 
   /// Classifies every cluster over the step from `x0` to `x1` (parallel over clusters).
   /// `x0` and `x1` must stay alive while pair_culled() and cull() use this step.
-  RadialViewCounts classify(const Positions& x0, const Positions& x1);
+  /// `find_clean`: also find the clean faces (view cones of every face and blocking
+  /// triangle). They only matter for pairs of faces that share a vertex: a clean face and
+  /// a face it does not touch are seen in disjoint regions, and then the edge planes of
+  /// (5) separate them too (two disjoint convex spherical polygons are separated by a
+  /// great circle through an edge of one of them; measured on the elbow gesture with the
+  /// isolated set: the same candidate pairs with or without clean faces). So callers
+  /// whose candidates never share a vertex (adjacency culling on) may skip it.
+  RadialViewCounts classify(const Positions& x0, const Positions& x1, bool find_clean = true);
 
   /// Whether the pair of faces (f, g) cannot collide over the classified step.
   bool pair_culled(Index f, Index g) const;
@@ -100,7 +107,7 @@ class RadialViewCulling {
 
   /// classify() then cull(): the one call the detector makes after the traversal.
   RadialViewCounts classify_and_cull(const Positions& x0, const Positions& x1,
-                                     std::vector<TrianglePair>& pairs);
+                                     std::vector<TrianglePair>& pairs, bool find_clean = true);
 
   /// Bit c set when face `f` is clean in cluster c over the classified step.
   std::uint64_t clean_mask(Index f) const { return m_clean_mask[f]; }
@@ -120,10 +127,9 @@ class RadialViewCulling {
     std::vector<char> unit_ok;
     std::vector<ViewCone> cones;
   };
-  void classify_cluster(Index c, const Positions& x0, const Positions& x1);
+  void classify_cluster(Index c, const Positions& x0, const Positions& x1, bool find_clean);
   void find_clean_faces(Index c, const std::vector<std::size_t>& blocking,
                         const std::vector<ViewCone>& ghost_cones);
-  bool edge_plane_separates(const ClusterState& state, Index f, int side, Index g) const;
 
   RadialViewClusters m_clusters;
   std::vector<ClusterState> m_state;

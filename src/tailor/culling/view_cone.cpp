@@ -58,17 +58,19 @@ ViewCone bounding_view_cone(const ViewCone* cones, int count) {
   if (count == 0 || !(length > 0) || !std::isfinite(length)) return {};
   ViewCone cone;
   cone.axis = sum / length;
-  double half = 0;
+  // cos(β + α) ≥ cos β cos α - sin β sin α with lower bounds of the cosines and upper
+  // bounds of the sines (all nonnegative), β the angle from the new axis to a member's
+  // axis and α the member's half-angle.
+  double min_cos = 1;
   for (int i = 0; i < count; ++i) {
-    const double to_axis =
-        std::atan2(cone.axis.cross(cones[i].axis).norm(), cone.axis.dot(cones[i].axis));
-    half = std::max(half, to_axis + std::atan2(cones[i].sin_half, cones[i].cos_half));
+    const double cos_beta = cone.axis.dot(cones[i].axis) - kSlack;
+    const double sin_beta = cone.axis.cross(cones[i].axis).norm() + kSlack;
+    if (!(cos_beta > 0)) return {};
+    min_cos = std::min(min_cos, cos_beta * cones[i].cos_half - sin_beta * cones[i].sin_half);
   }
-  half += 0x1p-30;
-  if (!(half < 1.5)) return {};  // under 86°: leaves room for the cosine bound below
-  cone.cos_half = std::cos(half) - kSlack;
-  cone.sin_half = std::min(1.0, std::sin(half) + kSlack);
+  cone.cos_half = min_cos - kSlack;
   if (!(cone.cos_half > kMinCos)) return {};
+  cone.sin_half = std::min(1.0, std::sqrt(1 - cone.cos_half * cone.cos_half) * (1 + kSlack));
   cone.everything = false;
   return cone;
 }

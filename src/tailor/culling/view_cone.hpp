@@ -45,10 +45,11 @@ ViewCone view_cone_of_directions(const Vec3 (&unit)[6]);
 bool unit_direction(const Vec3& observer, const Vec3& point, Vec3& unit);
 
 /// A cone holding every cone of `cones` (`count` of them): its axis is the normalised sum
-/// of theirs and its half-angle the largest angle to their axes plus their half-angles
-/// (triangle inequality on the sphere), angles computed with atan2 of the upper sine and
-/// lower cosine bounds and widened by 2^-30 rad, cosine and sine bounds taken with the
-/// same slack as above. Every direction when that reaches 90°.
+/// of theirs, and its half-angle bounds the angle β from that axis to each member's axis
+/// plus the member's half-angle α (triangle inequality on the sphere), in cosines:
+/// cos(β + α) ≥ cos β cos α - sin β sin α evaluated with lower bounds of the cosines
+/// and upper bounds of the sines, each widened by the 2^-40 slack. Every direction when
+/// a member is, or when the bound reaches 90°.
 ViewCone bounding_view_cone(const ViewCone* cones, int count);
 
 /// True only when no direction lies in both cones (certified: see the file comment).

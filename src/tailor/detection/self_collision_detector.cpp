@@ -86,7 +86,8 @@ struct SelfCollisionDetector::Impl {
         self_traversal(mesh, bvhs[c], contours[c], {x0, x1}, options, ctps, traversal);
       }
       if (use_radial_view) {
-        const RadialViewCounts counts = radial.classify_and_cull(x0, x1, ctps);
+        const RadialViewCounts counts =
+            radial.classify_and_cull(x0, x1, ctps, !config.adjacency_culling);
         stats.clusters_certified = counts.clusters_certified;
         stats.radial_positive = counts.triangles_positive;
         stats.radial_negative = counts.triangles_negative;
