@@ -45,29 +45,81 @@ const PaperRun& PaperBenchmark::run(const std::string& name) const {
   throw std::out_of_range("no run " + name);
 }
 
+namespace {
+
+// Share of `part` in `positive + negative + undetermined` at substep `i` (0 if none).
+double share(const PaperRun& r, const std::vector<std::int64_t>& part, std::size_t i) {
+  const std::int64_t total = r.radial_positive[i] + r.radial_negative[i] + r.radial_undetermined[i];
+  return total > 0 ? static_cast<double>(part[i]) / static_cast<double>(total) : 0.0;
+}
+
+double mean_share(const PaperRun& r, const std::vector<std::int64_t>& part) {
+  double sum = 0;
+  for (std::size_t i = 0; i < part.size(); ++i) sum += share(r, part, i);
+  return part.empty() ? 0 : sum / static_cast<double>(part.size());
+}
+
+// Fig. 1's stages in order, then Tang's configuration beside them.
+const std::vector<std::pair<std::string, std::string>>& fig1_rows() {
+  static const std::vector<std::pair<std::string, std::string>> rows{
+      {"basic BVH", "basic"},
+      {"+ normal cones", "normal_cones"},
+      {"+ radial view", "radial_view"},
+      {"+ isolated set (paper)", "paper"},
+      {"Tang: normal cones + isolated set, no radial view", "tang"}};
+  return rows;
+}
+
+}  // namespace
+
 std::string PaperBenchmark::fig1_csv() const {
   const auto& a = run("basic").ctps;
   const auto& b = run("normal_cones").ctps;
   const auto& c = run("radial_view").ctps;
   const auto& d = run("paper").ctps;
-  std::string csv = "step,basic,normal_cones,radial_view,isolated_set\n";
+  const auto& e = run("tang").ctps;
+  const PaperRun& paper = run("paper");
+  std::string csv =
+      "step,basic,normal_cones,radial_view,isolated_set,tang,positive,negative,undetermined\n";
   for (std::size_t i = 0; i < a.size(); ++i) {
-    csv += fmt::format("{},{},{},{},{}\n", i, a[i], b[i], c[i], d[i]);
+    csv +=
+        fmt::format("{},{},{},{},{},{},{:.4f},{:.4f},{:.4f}\n", i, a[i], b[i], c[i], d[i], e[i],
+                    share(paper, paper.radial_positive, i), share(paper, paper.radial_negative, i),
+                    share(paper, paper.radial_undetermined, i));
   }
   return csv;
 }
 
+bool PaperBenchmark::fig1_stages_decrease() const {
+  double previous = 0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const double m = mean(run(fig1_rows()[i].second).ctps);
+    if (i > 0 && !(m < previous || previous == 0)) return false;  // nothing left to lower
+    previous = m;
+  }
+  return true;
+}
+
 std::string PaperBenchmark::fig1_markdown() const {
   std::string md = "| high-level culling | mean CTPs per step | max |\n|---|---:|---:|\n";
-  for (const auto& [label, name] :
-       std::vector<std::pair<std::string, std::string>>{{"basic BVH", "basic"},
-                                                        {"+ normal cones", "normal_cones"},
-                                                        {"+ radial view", "radial_view"},
-                                                        {"+ isolated set", "paper"}}) {
+  for (const auto& [label, name] : fig1_rows()) {
     const auto& ctps = run(name).ctps;
     md += fmt::format("| {} | {:.1f} | {} |\n", label, mean(ctps),
                       ctps.empty() ? 0 : *std::max_element(ctps.begin(), ctps.end()));
   }
+  const double cones = mean(run("normal_cones").ctps), radial = mean(run("radial_view").ctps);
+  const double tang = mean(run("tang").ctps), paper = mean(run("paper").ctps);
+  md += fmt::format(
+      "\n+ radial view / + normal cones: {:.3f} (target ≤ 0.6); paper / Tang: {:.3f} (the paper "
+      "claims ≤ 0.5); every stage lowers the mean: {}\n",
+      cones > 0 ? radial / cones : 0.0, tang > 0 ? paper / tang : 0.0,
+      fig1_stages_decrease() ? "yes" : "NO");
+  const PaperRun& r = run("paper");
+  md += fmt::format(
+      "\nRadial-view classification (paper run, real and ghost triangles of every cluster, "
+      "mean share per step): positive {:.3f}, negative {:.3f}, undetermined {:.3f}\n",
+      mean_share(r, r.radial_positive), mean_share(r, r.radial_negative),
+      mean_share(r, r.radial_undetermined));
   return md;
 }
 
@@ -109,13 +161,14 @@ void PaperBenchmark::write(const std::filesystem::path& dir) const {
   write_file_atomically(dir / "table1.csv", table1_csv());
   write_file_atomically(dir / "table1.md", table1_markdown());
   LinePlot fig1;
-  fig1.title = "Candidate triangle pairs per step (elbow gesture)";
+  fig1.title = fmt::format("Candidate triangle pairs per step ({} gesture)", gesture);
   fig1.x_label = "step";
   fig1.y_label = "CTPs";
   fig1.series = {per_step("basic BVH", run("basic").ctps),
                  per_step("+ normal cones", run("normal_cones").ctps),
                  per_step("+ radial view", run("radial_view").ctps),
-                 per_step("+ isolated set", run("paper").ctps)};
+                 per_step("+ isolated set", run("paper").ctps),
+                 per_step("Tang (no radial view)", run("tang").ctps)};
   fig1.write(dir / "fig1.svg");
   LinePlot pairs;
   pairs.title = "VF + EE pairs reaching the exact CCD per step";
@@ -135,6 +188,7 @@ PaperBenchmark run_paper_benchmark(
     const SceneConfig& scene, const std::function<void(const std::string&, int, int)>& progress) {
   PaperBenchmark bench;
   bench.figures = std::make_shared<PaperFigures>(peak_flexion_frame(scene));
+  bench.gesture = scene.gesture.name;
   const std::vector<std::pair<std::string, DetectionConfig>> configs{
       {"basic", DetectionConfig::preset("basic")}, {"curtis", DetectionConfig::preset("curtis")},
       {"tang", DetectionConfig::preset("tang")},   {"paper", DetectionConfig::preset("paper")},
@@ -156,6 +210,9 @@ PaperBenchmark run_paper_benchmark(
         run.vf.push_back(d.vf_tested);
         run.ee.push_back(d.ee_tested);
         run.self_collisions.push_back(step.contact.self_collisions);
+        run.radial_positive.push_back(d.radial_positive);
+        run.radial_negative.push_back(d.radial_negative);
+        run.radial_undetermined.push_back(d.radial_undetermined);
         run.detect_ms.push_back(step.detection_ms);
         run.step_ms.push_back(step.step_ms);
       }

@@ -2,9 +2,14 @@
 /// @file
 /// High-level culling: BVH self- and pair-traversal producing candidate triangle pairs.
 
+#include <tbb/blocked_range.h>
+#include <tbb/combinable.h>
 #include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -56,6 +61,27 @@ class CandidateTraversal {
             const TraversalOptions& options);
   /// Adds every CTP between two BVHs over disjoint face sets.
   void pair(const MeshBvh& a, const MeshBvh& b, const TraversalOptions& options);
+
+  /// Removes every pair found since clear() for which `culled(pair)` holds (a later stage
+  /// of high-level culling, e.g. radial view); returns how many. Call it after the
+  /// traversals of a step: blocks may be partly filled afterwards. `culled` is called
+  /// from several threads at once.
+  template <class Culled>
+  std::int64_t remove_if(const Culled& culled) {
+    std::vector<std::vector<TrianglePair>*> used_blocks;
+    for (ThreadOutput& out : m_outputs) {
+      for (std::size_t b = 0; b < out.used; ++b) used_blocks.push_back(&out.blocks[b]);
+    }
+    tbb::combinable<std::int64_t> removed([] { return std::int64_t{0}; });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, used_blocks.size(), 1),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for (std::size_t b = range.begin(); b != range.end(); ++b) {
+                          removed.local() +=
+                              static_cast<std::int64_t>(std::erase_if(*used_blocks[b], culled));
+                        }
+                      });
+    return removed.combine(std::plus<>());
+  }
 
   /// The pairs found since clear(), as blocks (each pair `first < second`).
   std::vector<std::span<const TrianglePair>> blocks() const;

@@ -1,7 +1,6 @@
 #include "tailor/culling/radial_view.hpp"
 
 #include <fmt/format.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <map>
@@ -12,12 +11,6 @@
 
 namespace tailor {
 namespace {
-
-Vec3 centroid(const Positions& x, const std::vector<Index>& vertices) {
-  Vec3 sum = Vec3::Zero();
-  for (Index v : vertices) sum += x.row(v).transpose();
-  return sum / static_cast<double>(vertices.size());
-}
 
 // Boundary loops of a face set, or false if it is not edge-manifold, consistently
 // oriented, edge-connected, with each boundary vertex on one loop once.
@@ -82,10 +75,20 @@ bool cluster_loops(const TriangleMesh& mesh, const std::vector<Index>& faces,
 
 }  // namespace
 
+Vec3 loop_centroid(const Positions& x, const std::vector<Index>& vertices) {
+  Vec3 sum = Vec3::Zero();
+  for (Index v : vertices) sum += x.row(v).transpose();
+  return sum / static_cast<double>(vertices.size());
+}
+
 RadialViewClusters::RadialViewClusters(const TriangleMesh& mesh, const Positions& x_build,
                                        std::vector<std::vector<Index>> section_loops)
     : m_mesh(&mesh), m_section_loops(std::move(section_loops)) {
   if (m_section_loops.empty()) throw InputError("radial view needs at least one section loop");
+  if (m_section_loops.size() > static_cast<std::size_t>(kMaxObservers)) {
+    throw InputError(fmt::format("radial view takes at most {} section loops, got {}",
+                                 kMaxObservers, m_section_loops.size()));
+  }
   for (std::size_t i = 0; i < m_section_loops.size(); ++i) {
     if (m_section_loops[i].empty()) throw InputError(fmt::format("section loop {} is empty", i));
     for (Index v : m_section_loops[i]) {
@@ -95,81 +98,50 @@ RadialViewClusters::RadialViewClusters(const TriangleMesh& mesh, const Positions
       }
     }
   }
+  const std::size_t num_observers = m_section_loops.size();
   std::vector<Vec3> observers;
-  for (std::size_t c = 0; c < m_section_loops.size(); ++c) {
-    observers.push_back(centroid(x_build, m_section_loops[c]));
-  }
-  // Each vertex goes to its nearest observer; a face goes to the lowest cluster among
-  // its vertices. On a ring-structured tube this cuts along a ring of vertices, which
-  // keeps the ghost fans closing the cut facing away from the observers (a zigzag cut
-  // would put ghost triangles edge-on to them).
-  std::vector<Index> vertex_cluster(static_cast<std::size_t>(mesh.num_vertices()), 0);
+  for (const auto& loop : m_section_loops) observers.push_back(loop_centroid(x_build, loop));
+  // Each vertex is watched by its kWatchers nearest observers (ties to the lower index).
+  // On a ring-structured tube this cuts along rings of vertices, which keeps the ghost
+  // fans closing the cuts facing away from the observers.
+  std::vector<std::uint64_t> watched(static_cast<std::size_t>(mesh.num_vertices()), 0);
+  std::vector<std::pair<double, std::size_t>> by_distance(num_observers);
   for (Index v = 0; v < mesh.num_vertices(); ++v) {
     const Vec3 p = x_build.row(v);
-    for (std::size_t c = 1; c < observers.size(); ++c) {
-      if ((p - observers[c]).squaredNorm() < (p - observers[vertex_cluster[v]]).squaredNorm()) {
-        vertex_cluster[v] = static_cast<Index>(c);
-      }
+    for (std::size_t c = 0; c < num_observers; ++c) {
+      by_distance[c] = {(p - observers[c]).squaredNorm(), c};
+    }
+    const std::size_t watchers = std::min<std::size_t>(kWatchers, num_observers);
+    std::partial_sort(by_distance.begin(),
+                      by_distance.begin() + static_cast<std::ptrdiff_t>(watchers),
+                      by_distance.end());
+    for (std::size_t i = 0; i < watchers; ++i) {
+      watched[v] |= std::uint64_t{1} << by_distance[i].second;
     }
   }
-  m_cluster_faces.resize(observers.size());
+  m_cluster_faces.resize(num_observers);
+  m_member_mask.assign(static_cast<std::size_t>(mesh.num_faces()), 0);
   for (Index f = 0; f < mesh.num_faces(); ++f) {
     const auto v = mesh.faces().row(f);
-    m_cluster_faces[std::min({vertex_cluster[v[0]], vertex_cluster[v[1]], vertex_cluster[v[2]]})]
-        .push_back(f);
+    m_member_mask[f] = watched[v[0]] & watched[v[1]] & watched[v[2]];
+    for (std::size_t c = 0; c < num_observers; ++c) {
+      if ((m_member_mask[f] >> c) & 1) m_cluster_faces[c].push_back(f);
+    }
   }
-  m_certifiable.assign(observers.size(), 0);
-  m_ghost_loops.resize(observers.size());
-  for (std::size_t c = 0; c < observers.size(); ++c) {
-    m_certifiable[c] =
+  m_usable.assign(num_observers, 0);
+  m_ghost_loops.resize(num_observers);
+  for (std::size_t c = 0; c < num_observers; ++c) {
+    m_usable[c] =
         !m_cluster_faces[c].empty() && cluster_loops(mesh, m_cluster_faces[c], m_ghost_loops[c]);
+    if (!m_usable[c]) {
+      // Never used: drop the cluster from the faces' masks.
+      for (Index f : m_cluster_faces[c]) m_member_mask[f] &= ~(std::uint64_t{1} << c);
+    }
   }
 }
 
 Vec3 RadialViewClusters::observer(Index c, const Positions& x) const {
-  return centroid(x, m_section_loops[c]);
-}
-
-std::vector<char> RadialViewClusters::certify(const Positions& x0, const Positions& x1,
-                                              RadialViewCounts& counts) const {
-  std::vector<char> certified(m_cluster_faces.size(), 0);
-  for (std::size_t c = 0; c < m_cluster_faces.size(); ++c) {
-    if (!m_certifiable[c]) continue;
-    const Vec3 o0 = observer(static_cast<Index>(c), x0), o1 = observer(static_cast<Index>(c), x1);
-    std::int64_t positive = 0, negative = 0, undetermined = 0;
-    auto classify = [&](const Vec3& a0, const Vec3& b0, const Vec3& c0, const Vec3& a1,
-                        const Vec3& b1, const Vec3& c1) {
-      switch (coplanarity_sign(a0, b0, c0, o0, a1, b1, c1, o1)) {
-        case StepSign::positive:
-          ++positive;
-          break;
-        case StepSign::negative:
-          ++negative;
-          break;
-        case StepSign::mixed:
-          ++undetermined;
-          break;
-      }
-    };
-    for (Index f : m_cluster_faces[c]) {
-      const auto v = m_mesh->faces().row(f);
-      classify(x0.row(v[0]), x0.row(v[1]), x0.row(v[2]), x1.row(v[0]), x1.row(v[1]), x1.row(v[2]));
-    }
-    for (const auto& loop : m_ghost_loops[c]) {
-      const Vec3 center0 = centroid(x0, loop), center1 = centroid(x1, loop);
-      for (std::size_t i = 0; i < loop.size(); ++i) {
-        const Index u = loop[i], w = loop[(i + 1) % loop.size()];
-        // The face traverses u -> w; the ghost closing it traverses w -> u.
-        classify(x0.row(w), x0.row(u), center0, x1.row(w), x1.row(u), center1);
-      }
-    }
-    counts.triangles_positive += positive;
-    counts.triangles_negative += negative;
-    counts.triangles_undetermined += undetermined;
-    certified[c] = undetermined == 0 && (positive == 0 || negative == 0);
-    counts.clusters_certified += certified[c];
-  }
-  return certified;
+  return loop_centroid(x, m_section_loops[c]);
 }
 
 }  // namespace tailor

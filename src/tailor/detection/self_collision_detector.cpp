@@ -10,7 +10,7 @@
 #include "tailor/culling/bvh_traversal.hpp"
 #include "tailor/candidates/isolated_set.hpp"
 #include "tailor/culling/node_contours.hpp"
-#include "tailor/culling/radial_view.hpp"
+#include "tailor/culling/radial_view_culling.hpp"
 #include "tailor/detection/exact_pair_tests.hpp"
 #include "tailor/geometry/error.hpp"
 
@@ -41,10 +41,10 @@ struct SelfCollisionDetector::Impl {
   const TriangleMesh& mesh;
   DetectionConfig config;
   tbb::task_arena arena;
-  // One BVH over the whole mesh, or one per radial-view cluster.
+  // One BVH over the whole mesh; radial view culls the pairs its traversal produces.
   std::vector<MeshBvh> bvhs;
   std::vector<NodeContours> contours;
-  RadialViewClusters clusters;
+  RadialViewCulling radial;
   bool use_radial_view = false;
   IsolatedSet isolated;
   // Per-thread buffers reused from step to step.
@@ -61,14 +61,8 @@ struct SelfCollisionDetector::Impl {
     check_positions(mesh, x_build, "the build frame");
     use_radial_view = config.radial_view && !section_loops.empty();
     arena.execute([&] {
-      if (use_radial_view) {
-        clusters = RadialViewClusters(mesh, x_build, std::move(section_loops));
-        for (Index c = 0; c < clusters.num_clusters(); ++c) {
-          bvhs.emplace_back(mesh, x_build, clusters.faces(c));
-        }
-      } else {
-        bvhs.emplace_back(mesh, x_build);
-      }
+      if (use_radial_view) radial = RadialViewCulling(mesh, x_build, std::move(section_loops));
+      bvhs.emplace_back(mesh, x_build);
       contours.resize(bvhs.size());
       if (config.normal_cones && config.contour_test) {
         for (std::size_t c = 0; c < bvhs.size(); ++c) contours[c] = NodeContours(mesh, bvhs[c]);
@@ -82,18 +76,19 @@ struct SelfCollisionDetector::Impl {
     traversal.clear();
     const TraversalOptions options{config.normal_cones, config.contour_test,
                                    config.adjacency_culling};
-    std::vector<char> certified(bvhs.size(), 0);
-    if (use_radial_view) {
-      RadialViewCounts radial;
-      certified = clusters.certify(x0, x1, radial);
-      stats.clusters_certified = radial.clusters_certified;
-      stats.radial_positive = radial.triangles_positive;
-      stats.radial_negative = radial.triangles_negative;
-      stats.radial_undetermined = radial.triangles_undetermined;
-    }
     for (std::size_t c = 0; c < bvhs.size(); ++c) {
-      if (!certified[c]) traversal.self(bvhs[c], contours[c], {x0, x1}, options);
+      traversal.self(bvhs[c], contours[c], {x0, x1}, options);
       for (std::size_t d = c + 1; d < bvhs.size(); ++d) traversal.pair(bvhs[c], bvhs[d], options);
+    }
+    if (use_radial_view) {
+      // Clean faces matter only where candidates may share a vertex (radial_view_culling.hpp).
+      const RadialViewCounts counts = radial.classify(x0, x1, !config.adjacency_culling);
+      traversal.remove_if(
+          [&](const TrianglePair& p) { return radial.pair_culled(p.first, p.second); });
+      stats.clusters_certified = counts.clusters_certified;
+      stats.radial_positive = counts.triangles_positive;
+      stats.radial_negative = counts.triangles_negative;
+      stats.radial_undetermined = counts.triangles_undetermined;
     }
     const TraversalCounts counts = traversal.counts();
     stats.node_pairs_visited = counts.node_pairs_visited;

@@ -82,16 +82,15 @@ Sleeve make_sleeve(const Arm& arm, const SleeveParams& params) {
     }
   }
 
-  // Observers at the middle of the upper-arm and forearm parts of the sleeve.
-  const double elbow = arm.params().upper_arm_length;
-  const double end = params.start + params.length;
-  const double upper_mid = 0.5 * (params.start + std::min(elbow, end));
-  const double fore_mid = 0.5 * (std::max(elbow, params.start) + end);
-  const auto nearest_ring = [&](double x) {
-    const double r = std::round((x - params.start) / params.length * (rings - 1));
-    return static_cast<Index>(std::clamp(r, 0.0, static_cast<double>(rings - 1)));
-  };
-  s.observer_rings = {nearest_ring(upper_mid), nearest_ring(fore_mid)};
+  // Observers at the elbow ring and every kObserverSpacing (in whole rings) toward the
+  // ends, off the open end rings (an observer there would sit on its ghost fan).
+  const double ring_spacing = params.length / (rings - 1);
+  const auto step =
+      std::max<Index>(1, static_cast<Index>(std::lround(Sleeve::kObserverSpacing / ring_spacing)));
+  for (Index r = s.elbow_ring % step; r < rings; r += step) {
+    if (r > 0 && r < rings - 1) s.observer_rings.push_back(r);
+  }
+  if (s.observer_rings.empty()) s.observer_rings.push_back(rings / 2);
 
   // Two triangles per quad, diagonals alternating so the tube has no helical bias;
   // (ring r, j), (r, j+1), (r+1, j) is outward (see Arm).

@@ -29,9 +29,14 @@ struct Sleeve {
   Positions rest;                      ///< rest (and initial) positions
   std::shared_ptr<TriangleMesh> mesh;  ///< fixed connectivity
   Index elbow_ring = 0;                ///< ring nearest to the elbow in the rest pose
-  /// Rings nearest to the middle of the sleeve's upper-arm part and of its forearm part:
-  /// the section loops of the paper's two radial-view observers.
-  std::array<Index, 2> observer_rings{0, 0};
+  /// Section rings of the radial-view observers along the arm: the elbow ring and every
+  /// kObserverSpacing metres from it toward both ends (ascending); on the default sleeve
+  /// one in the upper-arm part, one at the elbow, one in the forearm part.
+  std::vector<Index> observer_rings;
+  /// Distance between consecutive observers along the sleeve (m). Measured on the three
+  /// gestures (culling/radial_view.hpp): 0.18 m (three observers, each seeing the whole
+  /// sleeve) leaves half the candidate pairs that 0.1 m (five, on shorter clusters) does.
+  static constexpr double kObserverSpacing = 0.18;
 
   /// Rings along the arm.
   Index num_rings() const { return params.rings; }
@@ -45,7 +50,9 @@ struct Sleeve {
   std::array<Index, 2> open_end_rings() const { return {0, params.rings - 1}; }
   /// Vertex ids of the observer rings (section loops for radial-view culling).
   std::vector<std::vector<Index>> observer_loops() const {
-    return {ring(observer_rings[0]), ring(observer_rings[1])};
+    std::vector<std::vector<Index>> loops;
+    for (Index r : observer_rings) loops.push_back(ring(r));
+    return loops;
   }
   /// Vertices attached to the arm (the shoulder ring).
   std::vector<Index> pinned_vertices() const { return ring(0); }

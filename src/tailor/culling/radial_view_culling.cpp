@@ -1,0 +1,374 @@
+#include "tailor/culling/radial_view_culling.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <bit>
+#include <optional>
+
+#include "tailor/culling/winding_number.hpp"
+#include "tailor/geometry/coplanarity_sign.hpp"
+
+namespace tailor {
+namespace {
+
+// Faces and blocking triangles are grouped this many at a time under one bounding view
+// cone, so that most group pairs are found disjoint without testing their members.
+constexpr int kGroup = 8;
+
+// Whether the swept box of `points` (positions at t = 0 and t = 1) and the swept box of
+// the observer are disjoint (exact: min/max of the given doubles).
+bool swept_boxes_disjoint(const std::array<Vec3, 6>& points, const Vec3& o0, const Vec3& o1) {
+  for (int axis = 0; axis < 3; ++axis) {
+    double lo = points[0][axis], hi = lo;
+    for (const Vec3& p : points) {
+      lo = std::min(lo, p[axis]);
+      hi = std::max(hi, p[axis]);
+    }
+    if (std::max(o0[axis], o1[axis]) < lo || std::min(o0[axis], o1[axis]) > hi) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+RadialViewCulling::RadialViewCulling(const TriangleMesh& mesh, const Positions& x_build,
+                                     std::vector<std::vector<Index>> section_loops)
+    : m_clusters(mesh, x_build, std::move(section_loops)) {
+  const Index n = m_clusters.num_clusters();
+  m_state.resize(static_cast<std::size_t>(n));
+  m_slot.resize(static_cast<std::size_t>(n));
+  m_cluster_vertices.resize(static_cast<std::size_t>(n));
+  m_local_faces.resize(static_cast<std::size_t>(n));
+  m_in_some_cluster.assign(static_cast<std::size_t>(mesh.num_faces()), 0);
+  std::vector<Index> local(static_cast<std::size_t>(mesh.num_vertices()), -1);
+  for (Index c = 0; c < n; ++c) {
+    if (!m_clusters.usable(c)) continue;
+    const auto& faces = m_clusters.faces(c);
+    m_slot[c].assign(static_cast<std::size_t>(mesh.num_faces()), -1);
+    std::vector<Index>& vertices = m_cluster_vertices[c];
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+      m_slot[c][faces[i]] = static_cast<Index>(i);
+      m_in_some_cluster[faces[i]] = 1;
+      std::array<Index, 3> corners{};
+      for (int k = 0; k < 3; ++k) {
+        const Index v = mesh.faces()(faces[i], k);
+        if (local[v] < 0) {
+          local[v] = static_cast<Index>(vertices.size());
+          vertices.push_back(v);
+        }
+        corners[k] = local[v];
+      }
+      m_local_faces[c].push_back(corners);
+    }
+    for (Index v : vertices) local[v] = -1;
+  }
+  m_clean_mask.assign(static_cast<std::size_t>(mesh.num_faces()), 0);
+  m_face_planes.resize(static_cast<std::size_t>(mesh.num_faces()));
+}
+
+RadialViewCounts RadialViewCulling::classify(const Positions& x0, const Positions& x1,
+                                             bool find_clean) {
+  m_x0 = &x0;
+  m_x1 = &x1;
+  const TriangleMesh& mesh = m_clusters.mesh();
+  tbb::parallel_for(Index{0}, mesh.num_faces(), [&](Index f) {
+    if (!m_in_some_cluster[f]) return;
+    const auto v = mesh.faces().row(f);
+    m_face_planes[f] = MovingPlane(x0.row(v[0]), x0.row(v[1]), x0.row(v[2]), x1.row(v[0]),
+                                   x1.row(v[1]), x1.row(v[2]));
+  });
+  const Index n = m_clusters.num_clusters();
+  tbb::parallel_for(Index{0}, n, [&](Index c) { classify_cluster(c, x0, x1, find_clean); });
+  std::fill(m_clean_mask.begin(), m_clean_mask.end(), 0);
+  RadialViewCounts counts;
+  for (Index c = 0; c < n; ++c) {
+    const ClusterState& state = m_state[c];
+    counts.clusters_used += state.counts.clusters_used;
+    counts.clusters_certified += state.counts.clusters_certified;
+    counts.triangles_positive += state.counts.triangles_positive;
+    counts.triangles_negative += state.counts.triangles_negative;
+    counts.triangles_undetermined += state.counts.triangles_undetermined;
+    counts.faces_clean += state.counts.faces_clean;
+    const auto& faces = m_clusters.faces(c);
+    for (std::size_t i = 0; i < state.face_sign.size(); ++i) {
+      if (state.face_sign[i] == 2) m_clean_mask[faces[i]] |= std::uint64_t{1} << c;
+    }
+  }
+  return counts;
+}
+
+void RadialViewCulling::classify_cluster(Index c, const Positions& x0, const Positions& x1,
+                                         bool find_clean) {
+  ClusterState& state = m_state[c];
+  state.counts = {};
+  state.face_raw.clear();
+  state.face_sign.clear();
+  if (!m_clusters.usable(c)) return;
+  const TriangleMesh& mesh = m_clusters.mesh();
+  const auto& faces = m_clusters.faces(c);
+  const Vec3 o0 = m_clusters.observer(c, x0), o1 = m_clusters.observer(c, x1);
+  state.observer0 = o0;
+  state.observer1 = o1;
+
+  // Raw signs of det(b-a, c-a, o-a) over the step; the plane of a face does not depend on
+  // the observer, so it was built once for every cluster.
+  state.face_raw.resize(faces.size());
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    state.face_raw[i] = static_cast<signed char>(m_face_planes[faces[i]].side(o0, o1));
+  }
+  // The ghost triangles (w, u, centre) of each loop edge u -> w.
+  struct Ghost {
+    Index u, w;
+    Vec3 centre0, centre1;
+    signed char raw;
+  };
+  std::vector<Ghost> ghosts;
+  for (const auto& loop : m_clusters.ghost_loops(c)) {
+    const Vec3 centre0 = loop_centroid(x0, loop), centre1 = loop_centroid(x1, loop);
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const Index u = loop[i], w = loop[(i + 1) % loop.size()];
+      const auto raw = static_cast<signed char>(
+          coplanarity_sign(x0.row(w), x0.row(u), centre0, o0, x1.row(w), x1.row(u), centre1, o1));
+      ghosts.push_back({u, w, centre0, centre1, raw});
+    }
+  }
+  const auto corners = [&](Index f) {
+    const auto v = mesh.faces().row(f);
+    return std::array<Vec3, 6>{x0.row(v[0]), x0.row(v[1]), x0.row(v[2]),
+                               x1.row(v[0]), x1.row(v[1]), x1.row(v[2])};
+  };
+  const auto ghost_corners = [&](const Ghost& g) {
+    return std::array<Vec3, 6>{x0.row(g.w), x0.row(g.u), g.centre0,
+                               x1.row(g.w), x1.row(g.u), g.centre1};
+  };
+
+  // (1) of the header: the observer is on no triangle during the step, and the winding
+  // number at t = 0 is ±1.
+  bool on_surface = false;
+  for (std::size_t i = 0; i < faces.size() && !on_surface; ++i) {
+    on_surface = state.face_raw[i] == 0 && !swept_boxes_disjoint(corners(faces[i]), o0, o1);
+  }
+  for (std::size_t i = 0; i < ghosts.size() && !on_surface; ++i) {
+    on_surface = ghosts[i].raw == 0 && !swept_boxes_disjoint(ghost_corners(ghosts[i]), o0, o1);
+  }
+  std::optional<int> winding;
+  if (!on_surface) {
+    std::vector<TriangleCorners> surface;
+    surface.reserve(faces.size() + ghosts.size());
+    for (Index f : faces) {
+      const auto v = mesh.faces().row(f);
+      surface.push_back({x0.row(v[0]), x0.row(v[1]), x0.row(v[2])});
+    }
+    for (const Ghost& g : ghosts) surface.push_back({x0.row(g.w), x0.row(g.u), g.centre0});
+    winding = winding_number(surface, o0);
+  }
+  // Behind an outward face det(b-a, c-a, o-a) < 0: with winding +1, "positive" is a
+  // negative raw sign; with winding -1 the cluster is oriented inward and it is the
+  // other way round.
+  const int seeing = winding == 1 ? -1 : winding == -1 ? 1 : 0;
+  RadialViewCounts& counts = state.counts;
+  if (seeing == 0) {
+    counts.triangles_undetermined += static_cast<std::int64_t>(faces.size() + ghosts.size());
+    state.face_sign.assign(faces.size(), 0);
+    return;
+  }
+  counts.clusters_used = 1;
+  const auto relative = [&](signed char raw) -> signed char {
+    return raw == 0 ? 0 : raw == seeing ? 1 : -1;
+  };
+  state.face_sign.resize(faces.size());
+  std::vector<std::size_t> blocking;  // cluster face slots, then faces.size() + ghost index
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    state.face_sign[i] = relative(state.face_raw[i]);
+    if (state.face_sign[i] != 1) blocking.push_back(i);
+  }
+  for (std::size_t i = 0; i < ghosts.size(); ++i) {
+    if (relative(ghosts[i].raw) != 1) blocking.push_back(faces.size() + i);
+  }
+  for (std::size_t i = 0; i < faces.size() + ghosts.size(); ++i) {
+    const signed char sign =
+        i < faces.size() ? state.face_sign[i] : relative(ghosts[i - faces.size()].raw);
+    ++(sign == 1   ? counts.triangles_positive
+       : sign == 0 ? counts.triangles_undetermined
+                   : counts.triangles_negative);
+  }
+  if (blocking.empty()) {
+    counts.clusters_certified = 1;
+    std::fill(state.face_sign.begin(), state.face_sign.end(), 2);
+    counts.faces_clean = static_cast<std::int64_t>(faces.size());
+    return;
+  }
+  if (!find_clean) return;
+
+  // View cones of the faces (from directions to the vertices, shared by the faces around
+  // each vertex) and of the ghost triangles.
+  const std::vector<Index>& vertices = m_cluster_vertices[c];
+  state.unit0.resize(vertices.size());
+  state.unit1.resize(vertices.size());
+  state.unit_ok.resize(vertices.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    state.unit_ok[i] = unit_direction(o0, x0.row(vertices[i]), state.unit0[i]) &&
+                       unit_direction(o1, x1.row(vertices[i]), state.unit1[i]);
+  }
+  state.cones.resize(faces.size());
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const auto& l = m_local_faces[c][i];
+    if (!state.unit_ok[l[0]] || !state.unit_ok[l[1]] || !state.unit_ok[l[2]]) {
+      state.cones[i] = {};
+      continue;
+    }
+    const Vec3 unit[6] = {state.unit0[l[0]], state.unit0[l[1]], state.unit0[l[2]],
+                          state.unit1[l[0]], state.unit1[l[1]], state.unit1[l[2]]};
+    state.cones[i] = view_cone_of_directions(unit);
+  }
+  std::vector<ViewCone> ghost_cones(ghosts.size());
+  for (std::size_t i = 0; i < ghosts.size(); ++i) {
+    const auto p = ghost_corners(ghosts[i]);
+    ghost_cones[i] = swept_view_cone(p[0], p[1], p[2], o0, p[3], p[4], p[5], o1);
+  }
+  find_clean_faces(c, blocking, ghost_cones);
+}
+
+void RadialViewCulling::find_clean_faces(Index c, const std::vector<std::size_t>& blocking,
+                                         const std::vector<ViewCone>& ghost_cones) {
+  ClusterState& state = m_state[c];
+  const std::size_t num_faces = state.face_sign.size();
+  const auto cone_of = [&](std::size_t i) -> const ViewCone& {
+    return i < num_faces ? state.cones[i] : ghost_cones[i - num_faces];
+  };
+  // Blocking triangles in groups under bounding cones.
+  std::vector<ViewCone> block_cones, block_groups;
+  block_cones.reserve(blocking.size());
+  for (std::size_t i : blocking) block_cones.push_back(cone_of(i));
+  for (std::size_t i = 0; i < block_cones.size(); i += kGroup) {
+    const int n = static_cast<int>(std::min<std::size_t>(kGroup, block_cones.size() - i));
+    block_groups.push_back(bounding_view_cone(&block_cones[i], n));
+  }
+  // Positive faces in groups of consecutive faces; a face stays clean until a blocking
+  // triangle may be seen in its cone.
+  std::vector<ViewCone> members;
+  for (std::size_t first = 0; first < num_faces; first += kGroup) {
+    const std::size_t last = std::min(num_faces, first + kGroup);
+    members.clear();
+    for (std::size_t i = first; i < last; ++i) {
+      if (state.face_sign[i] == 1) members.push_back(state.cones[i]);
+    }
+    if (members.empty()) continue;
+    const ViewCone group = bounding_view_cone(members.data(), static_cast<int>(members.size()));
+    std::vector<char> clean(last - first, 1);
+    for (std::size_t b = 0; b < block_groups.size(); ++b) {
+      if (view_cones_disjoint(group, block_groups[b])) continue;
+      const std::size_t b_end = std::min(block_cones.size(), (b + 1) * kGroup);
+      for (std::size_t i = first; i < last; ++i) {
+        if (state.face_sign[i] != 1 || !clean[i - first]) continue;
+        if (view_cones_disjoint(state.cones[i], block_groups[b])) continue;
+        for (std::size_t j = b * kGroup; j < b_end && clean[i - first]; ++j) {
+          clean[i - first] = view_cones_disjoint(state.cones[i], block_cones[j]);
+        }
+      }
+    }
+    for (std::size_t i = first; i < last; ++i) {
+      if (state.face_sign[i] == 1 && clean[i - first]) {
+        state.face_sign[i] = 2;
+        ++state.counts.faces_clean;
+      }
+    }
+  }
+}
+
+namespace {
+
+// The corners of one face at t = 0 and t = 1.
+struct FaceCorners {
+  Vec3 at0[3], at1[3];
+};
+
+FaceCorners face_corners(const TriangleMesh& mesh, Index f, const Positions& x0,
+                         const Positions& x1) {
+  FaceCorners c;
+  for (int k = 0; k < 3; ++k) {
+    c.at0[k] = x0.row(mesh.faces()(f, k));
+    c.at1[k] = x1.row(mesh.faces()(f, k));
+  }
+  return c;
+}
+
+// Rule (5) of the header: some edge (a, b) of `f`, whose third vertex lies on side `side`
+// of the plane through o, a, b over the step, has the three corners of `g` strictly on
+// the other side over the whole step.
+bool edge_plane_separates(const FaceCorners& f, int side, const FaceCorners& g, const Vec3& o0,
+                          const Vec3& o1) {
+  if (side == 0) return false;
+  // Plain double first, relative to the observer: det(b-a, p-a, o-a) = -((a-o)×(b-o))·(p-o).
+  // Its values at t = 0 and t = 1 are the end Bernstein coefficients; rounding here can
+  // only keep a pair, the certificate below decides.
+  Vec3 rf0[3], rg0[3];
+  for (int k = 0; k < 3; ++k) {
+    rf0[k] = f.at0[k] - o0;
+    rg0[k] = g.at0[k] - o0;
+  }
+  for (int k = 0; k < 3; ++k) {
+    const int l = (k + 1) % 3;
+    const Vec3 n0 = rf0[k].cross(rf0[l]);
+    if (!(n0.dot(rg0[0]) * side > 0 && n0.dot(rg0[1]) * side > 0 && n0.dot(rg0[2]) * side > 0)) {
+      continue;
+    }
+    const Vec3 n1 = (f.at1[k] - o1).cross(f.at1[l] - o1);
+    bool maybe = true;
+    for (int j = 0; j < 3 && maybe; ++j) maybe = n1.dot(g.at1[j] - o1) * side > 0;
+    if (!maybe) continue;
+    // Certified on the given doubles: det(b-a, p-a, o-a) = det(p-a, o-a, b-a), the side
+    // of p of the plane through a, o, b.
+    const MovingPlane plane(f.at0[k], o0, f.at0[l], f.at1[k], o1, f.at1[l]);
+    bool separated = true;
+    for (int j = 0; j < 3 && separated; ++j) {
+      separated = static_cast<int>(plane.side(g.at0[j], g.at1[j])) == -side;
+    }
+    if (separated) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool RadialViewCulling::pair_culled(Index f, Index g) const {
+  const std::uint64_t common = m_clusters.member_mask(f) & m_clusters.member_mask(g);
+  if (common == 0) return false;
+  if (((m_clean_mask[f] | m_clean_mask[g]) & common) != 0) return true;
+  const TriangleMesh& mesh = m_clusters.mesh();
+  const FaceCorners cf = face_corners(mesh, f, *m_x0, *m_x1);
+  const FaceCorners cg = face_corners(mesh, g, *m_x0, *m_x1);
+  for (std::uint64_t rest = common; rest != 0; rest &= rest - 1) {
+    const auto c = static_cast<Index>(std::countr_zero(rest));
+    const ClusterState& state = m_state[c];
+    if (state.face_raw.empty()) continue;
+    const Vec3& o0 = state.observer0;
+    const Vec3& o1 = state.observer1;
+    if (edge_plane_separates(cf, state.face_raw[m_slot[c][f]], cg, o0, o1) ||
+        edge_plane_separates(cg, state.face_raw[m_slot[c][g]], cf, o0, o1)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+std::int64_t RadialViewCulling::cull(std::vector<TrianglePair>& pairs) const {
+  std::vector<char> culled(pairs.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 256),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                        culled[i] = pair_culled(pairs[i].first, pairs[i].second);
+                      }
+                    });
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    if (!culled[i]) pairs[kept++] = pairs[i];
+  }
+  const auto removed = static_cast<std::int64_t>(pairs.size() - kept);
+  pairs.resize(kept);
+  return removed;
+}
+
+}  // namespace tailor

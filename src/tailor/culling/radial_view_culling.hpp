@@ -1,0 +1,144 @@
+#pragma once
+/// @file
+/// Radial-view culling of candidate triangle pairs (Wong et al. 2013, "Radial view based
+/// culling for continuous self-collision detection of skeletal models"; the paper §2.2),
+/// with the per-triangle classification that lets it cut inside clusters that bend and
+/// fold, not only inside clusters that stay convex-looking as a whole.
+///
+/// ## What is classified
+/// For each usable cluster (radial_view.hpp) and each step, every real and ghost triangle
+/// is classified against the cluster's observer o(t) by the exact Bernstein sign of
+/// det(b-a, c-a, o-a) over the step (geometry/coplanarity_sign.hpp): *positive* when the
+/// observer stays strictly on the side of the triangle it should see (behind an outward
+/// face), *negative* when it stays strictly on the other side, *undetermined* otherwise.
+/// Ghost vertices (loop centroids) and observers move linearly between their positions at
+/// t = 0 and t = 1 as computed in double: that is their definition, used by every test.
+///
+/// ## The theorem (degree argument)
+/// Let S(t) be the cluster closed by its ghost fans and π_t(x) = (x - o(t)) / |x - o(t)|.
+/// (1) While o(t) is on no triangle of S(t), π_t has a constant integer degree w, the
+///     winding number of S(t) around o(t). A positive or negative triangle never holds o
+///     (its sign never vanishes); an undetermined one must have a swept box disjoint from
+///     the observer's, else the cluster is not used for the step. w is computed exactly at
+///     t = 0 (culling/winding_number.hpp); the cluster is used only when |w| = 1, the
+///     orientation being chosen so that w = 1 (a cluster oriented inward swaps positive
+///     and negative).
+/// (2) Let B(t) be the negative and undetermined triangles (real and ghost) and U(t) the
+///     directions not in π_t(B(t)). On the positive triangles π_t preserves orientation
+///     and is a local homeomorphism away from vertices; a regular direction in U(t) only
+///     meets positive triangles, each meeting counting +1 toward w = 1, so it has exactly
+///     one preimage; a vertex whose star wraps k ≥ 2 times around its direction would give
+///     nearby regular directions k preimages. So every direction in U(t) is seen once.
+/// (3) Two non-incident features (VF or EE) that touch at time t at point q are two
+///     different points of S(t) seen in the same direction, so that direction lies in
+///     π_t(B(t)): both triangles holding the features have a point seen, at time t, in a
+///     direction in which a negative or undetermined triangle is seen.
+/// (4) The view cone of a triangle over the step holds every direction in which it is
+///     seen at any t (culling/view_cone.hpp). A positive real triangle whose view cone is
+///     disjoint from the view cone of every negative and undetermined triangle (real or
+///     ghost) of the cluster is *clean*: no point of it touches any non-incident feature of
+///     the cluster during the step. Every VF/EE pair a CTP (f, g) stands for has one
+///     feature on f and the other on g, so a pair of faces of one cluster in which one face
+///     is clean stands for no collision and is culled.
+/// (5) Independently of the classification (it needs no closed surface, only a moving
+///     point): let (a, b) be an edge of face f and c its third vertex. If c stays strictly
+///     on one side of the plane through o(t), a(t), b(t) and the three vertices of face g
+///     stay strictly on the other side over the whole step (exact Bernstein signs), that
+///     plane separates f(t) from g(t) at every t: g is seen entirely beyond the edge (a, b)
+///     of f, their radial projections are disjoint, and the pair is culled. (A degenerate
+///     plane, o on the line ab, makes every sign vanish: no cull.)
+/// When every triangle of a cluster is positive, every face is clean: the whole cluster is
+/// certified, the original radial-view test of Wong et al. and of the paper.
+///
+/// Pairs of faces that share no usable cluster are left to the BVH traversal; culling
+/// only removes pairs from what the traversal (with normal cones where it applies)
+/// produced, so radial view never costs more candidate pairs than the traversal alone.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "tailor/culling/moving_plane.hpp"
+#include "tailor/culling/radial_view.hpp"
+#include "tailor/culling/triangle_pair.hpp"
+#include "tailor/culling/view_cone.hpp"
+
+namespace tailor {
+
+/// Counts of one step's radial-view classification (real and ghost triangles, summed over
+/// the clusters; a face in two clusters counts twice).
+struct RadialViewCounts {
+  std::int64_t clusters_used = 0;           ///< clusters whose winding number was ±1
+  std::int64_t clusters_certified = 0;      ///< clusters with every triangle positive
+  std::int64_t triangles_positive = 0;      ///< observer strictly on the seeing side
+  std::int64_t triangles_negative = 0;      ///< observer strictly on the other side
+  std::int64_t triangles_undetermined = 0;  ///< the sign may vanish, or cluster not used
+  std::int64_t faces_clean = 0;             ///< positive faces seen where no other is
+  std::int64_t pairs_culled = 0;            ///< candidate triangle pairs removed
+};
+
+/// The per-step state of radial-view culling over a fixed set of clusters.
+class RadialViewCulling {
+ public:
+  RadialViewCulling() = default;
+  /// Builds the clusters (see RadialViewClusters for the arguments and errors).
+  RadialViewCulling(const TriangleMesh& mesh, const Positions& x_build,
+                    std::vector<std::vector<Index>> section_loops);
+
+  const RadialViewClusters& clusters() const { return m_clusters; }
+
+  /// Classifies every cluster over the step from `x0` to `x1` (parallel over clusters).
+  /// `x0` and `x1` must stay alive while pair_culled() and cull() use this step.
+  /// `find_clean`: also find the clean faces (view cones of every face and blocking
+  /// triangle). They only matter for pairs of faces that share a vertex: a clean face and
+  /// a face it does not touch are seen in disjoint regions, and then the edge planes of
+  /// (5) separate them too (two disjoint convex spherical polygons are separated by a
+  /// great circle through an edge of one of them; measured on the elbow gesture with the
+  /// isolated set: the same candidate pairs with or without clean faces). So callers
+  /// whose candidates never share a vertex (adjacency culling on) may skip it.
+  RadialViewCounts classify(const Positions& x0, const Positions& x1, bool find_clean = true);
+
+  /// Whether the pair of faces (f, g) cannot collide over the classified step.
+  bool pair_culled(Index f, Index g) const;
+
+  /// Removes from `pairs` every pair culled over the classified step (order kept);
+  /// returns how many were removed.
+  std::int64_t cull(std::vector<TrianglePair>& pairs) const;
+
+  /// Bit c set when face `f` is clean in cluster c over the classified step.
+  std::uint64_t clean_mask(Index f) const { return m_clean_mask[f]; }
+  /// Per face of cluster `c` (in clusters().faces(c) order), over the classified step: -1
+  /// negative, 0 undetermined, 1 positive, 2 positive and clean (all 0 when the cluster's
+  /// winding number is not ±1; empty when the cluster is not usable).
+  const std::vector<signed char>& face_signs(Index c) const { return m_state[c].face_sign; }
+
+ private:
+  struct ClusterState {
+    Vec3 observer0 = Vec3::Zero(), observer1 = Vec3::Zero();
+    std::vector<signed char> face_raw;   // coplanarity_sign(a, b, c, observer) per face
+    std::vector<signed char> face_sign;  // as face_signs()
+    RadialViewCounts counts;
+    // Scratch reused from step to step.
+    std::vector<Vec3> unit0, unit1;  // directions to the cluster's vertices
+    std::vector<char> unit_ok;
+    std::vector<ViewCone> cones;
+  };
+  void classify_cluster(Index c, const Positions& x0, const Positions& x1, bool find_clean);
+  void find_clean_faces(Index c, const std::vector<std::size_t>& blocking,
+                        const std::vector<ViewCone>& ghost_cones);
+
+  RadialViewClusters m_clusters;
+  std::vector<ClusterState> m_state;
+  std::vector<std::uint64_t> m_clean_mask;
+  std::vector<MovingPlane> m_face_planes;  // plane of each face over the step
+  std::vector<char> m_in_some_cluster;
+  // Per cluster: its vertices, and each face's three vertices as indices into them.
+  std::vector<std::vector<Index>> m_cluster_vertices;
+  std::vector<std::vector<std::array<Index, 3>>> m_local_faces;
+  // Position of face f within clusters().faces(c), per cluster; -1 if not a member.
+  std::vector<std::vector<Index>> m_slot;
+  const Positions* m_x0 = nullptr;  // the classified step
+  const Positions* m_x1 = nullptr;
+};
+
+}  // namespace tailor

@@ -1,0 +1,131 @@
+/// @file
+/// Radial-view culling on the sleeve during the gestures, against brute force at every
+/// substep: the detector's collision sets with radial view equal brute force's, no culled
+/// pair of faces holds a collision, and the culling cuts most of Tang's pairs.
+
+#include <gtest/gtest.h>
+
+#include "support/sanitized.hpp"
+#include "tailor/culling/radial_view_culling.hpp"
+#include "tailor/detection/brute_force.hpp"
+#include "tailor/detection/self_collision_detector.hpp"
+#include "tailor/sim/simulation.hpp"
+
+namespace tailor {
+namespace {
+
+using tailor::testing::sanitized;
+
+/// A small, fast version of the default scene (the gesture played twice as fast), one
+/// substep per frame so that every substep can be checked.
+SceneConfig small_scene(const std::string& gesture) {
+  SceneConfig c;
+  c.sleeve.rings = 13;
+  c.sleeve.segments = 20;
+  c.gesture.name = gesture;
+  c.gesture.settle_time = 0.1;
+  c.gesture.speed = 2.0;
+  c.time_step = c.time_step / c.substeps;
+  c.substeps = 1;
+  return c;
+}
+
+bool same_collisions(const CollisionSet& a, const CollisionSet& b) {
+  if (a.vertex_face.size() != b.vertex_face.size() || a.edge_edge.size() != b.edge_edge.size()) {
+    return false;
+  }
+  for (std::size_t i = 0; i < a.vertex_face.size(); ++i) {
+    if (a.vertex_face[i].vertex != b.vertex_face[i].vertex ||
+        a.vertex_face[i].face != b.vertex_face[i].face) {
+      return false;
+    }
+  }
+  for (std::size_t i = 0; i < a.edge_edge.size(); ++i) {
+    if (a.edge_edge[i].edge_a != b.edge_edge[i].edge_a ||
+        a.edge_edge[i].edge_b != b.edge_edge[i].edge_b) {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::int64_t culled_colliding_pairs(const TriangleMesh& mesh, const CollisionSet& truth,
+                                    const RadialViewCulling& radial) {
+  std::int64_t wrong = 0;
+  const auto check = [&](std::span<const Index> a, std::span<const Index> b) {
+    for (Index f : a) {
+      for (Index g : b) wrong += f != g && radial.pair_culled(f, g);
+    }
+  };
+  for (const VertexFaceCollision& c : truth.vertex_face) {
+    const Index face[] = {c.face};
+    check(mesh.vertex_faces(c.vertex), face);
+  }
+  for (const EdgeEdgeCollision& c : truth.edge_edge) {
+    check(mesh.edge_faces(c.edge_a), mesh.edge_faces(c.edge_b));
+  }
+  return wrong;
+}
+
+// Plays the gesture and checks every substep: the step the cloth took, and the same
+// motion stretched 4x (the cloth then passes through itself at the folds, so there are
+// collisions to lose).
+void check_gesture(const std::string& gesture) {
+  const SceneConfig scene = small_scene(gesture);
+  Simulation simulation(scene);
+  const TriangleMesh& mesh = simulation.cloth_mesh();
+  const Positions& rest = simulation.scene().sleeve().rest;
+  const auto loops = simulation.scene().observer_loops();
+  DetectionConfig tang = DetectionConfig::preset("tang");
+  tang.keep_candidate_pairs = true;
+  DetectionConfig cones_radial = DetectionConfig::preset("basic");
+  cones_radial.normal_cones = cones_radial.contour_test = cones_radial.radial_view = true;
+  SelfCollisionDetector paper(mesh, rest, DetectionConfig::preset("paper"), loops);
+  SelfCollisionDetector radial_stage(mesh, rest, cones_radial, loops);
+  SelfCollisionDetector without(mesh, rest, tang);
+  RadialViewCulling radial(mesh, rest, loops);
+
+  // Every substep up to the peak of the gesture (0.6 s), every third under sanitizers.
+  const int substeps = static_cast<int>(0.6 / scene.time_step);
+  const int stride = sanitized() ? 3 : 1;
+  std::int64_t steps = 0, collisions = 0, ctps_tang = 0, ctps_radial = 0;
+  Positions x0 = simulation.cloth_positions();
+  for (int substep = 0; substep < substeps; ++substep) {
+    simulation.step_frame();
+    const Positions x1 = simulation.cloth_positions();
+    if (substep % stride == 0) {
+      for (const double stretch : {1.0, 4.0}) {
+        SCOPED_TRACE(::testing::Message() << gesture << " substep " << substep << " x" << stretch);
+        const Positions target = x0 + stretch * (x1 - x0);
+        const CollisionSet truth = brute_force_self_collisions(mesh, x0, target);
+        collisions += static_cast<std::int64_t>(truth.size());
+        EXPECT_TRUE(same_collisions(paper.detect(x0, target).collisions, truth));
+        EXPECT_TRUE(same_collisions(radial_stage.detect(x0, target).collisions, truth));
+        radial.classify(x0, target);
+        EXPECT_EQ(culled_colliding_pairs(mesh, truth, radial), 0);
+        std::vector<TrianglePair> pairs = without.detect(x0, target).candidate_triangle_pairs;
+        ctps_tang += static_cast<std::int64_t>(pairs.size());
+        radial.cull(pairs);
+        ctps_radial += static_cast<std::int64_t>(pairs.size());
+        ++steps;
+      }
+    }
+    x0 = x1;
+  }
+  EXPECT_GT(collisions, 0) << gesture;
+  EXPECT_LT(2 * ctps_radial, ctps_tang) << gesture << ": radial view cut too little";
+  EXPECT_GT(steps, 0);
+}
+
+TEST(RadialViewGestures, Elbow) {
+  check_gesture("elbow");
+}
+TEST(RadialViewGestures, Raise) {
+  check_gesture("raise");
+}
+TEST(RadialViewGestures, Twist) {
+  check_gesture("twist");
+}
+
+}  // namespace
+}  // namespace tailor
