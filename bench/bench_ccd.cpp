@@ -25,12 +25,11 @@
 
 #include "naive_ccd.hpp"
 #include "support/degenerate_ccd_queries.hpp"
-#include "tailor/candidates/isolated_set.hpp"
-#include "tailor/candidates/primitive_pair_generator.hpp"
 #include "tailor/ccd/ccd.hpp"
 #include "tailor/ccd/ccd_exact.hpp"
 #include "tailor/ccd/ccd_rational.hpp"
 #include "tailor/ccd/query_io.hpp"
+#include "tailor/detection/ccd_query_export.hpp"
 #include "tailor/detection/self_collision_detector.hpp"
 #include "tailor/geometry/coplanarity_sign.hpp"
 #include "tailor/mesh/procedural_steps.hpp"
@@ -99,29 +98,11 @@ QuerySet folded_cloth() {
   config.keep_candidate_pairs = true;
   SelfCollisionDetector detector(mesh, step.x0, config);
   const DetectionResult result = detector.detect(step.x0, step.x1);
-  const IsolatedSet isolated = IsolatedSet::build(mesh);
-  PrimitivePairGenerator generator(mesh);
-  std::vector<VertexFacePair> vf_pairs;
-  std::vector<EdgeEdgePair> ee_pairs;
-  LowLevelCounts counts;
-  generator.generate(result.candidate_triangle_pairs, isolated, step.x0, step.x1,
-                     {config.feature_assignment, config.primitive_boxes, config.coplanarity_filter,
-                      config.adjacency_culling},
-                     vf_pairs, ee_pairs, counts);
+  StepCcdQueries queries =
+      step_ccd_queries(mesh, step.x0, step.x1, config, result.candidate_triangle_pairs);
   QuerySet r;
-  const auto& x0 = step.x0;
-  const auto& x1 = step.x1;
-  for (const auto& [v, f] : vf_pairs) {
-    const Index a = mesh.faces()(f, 0), b = mesh.faces()(f, 1), c = mesh.faces()(f, 2);
-    r.vf.push_back(
-        {x0.row(v), x0.row(a), x0.row(b), x0.row(c), x1.row(v), x1.row(a), x1.row(b), x1.row(c)});
-  }
-  for (const auto& [e1, e2] : ee_pairs) {
-    const Index a = mesh.edges()(e1, 0), b = mesh.edges()(e1, 1), c = mesh.edges()(e2, 0),
-                d = mesh.edges()(e2, 1);
-    r.ee.push_back(
-        {x0.row(a), x0.row(b), x0.row(c), x0.row(d), x1.row(a), x1.row(b), x1.row(c), x1.row(d)});
-  }
+  r.vf = std::move(queries.vertex_face);
+  r.ee = std::move(queries.edge_edge);
   // Truth: the exact CCD (tests compare it with the rational oracle).
   for (const auto& q : r.vf) r.vf_truth.push_back(vertex_face_ccd(q).hit);
   for (const auto& q : r.ee) r.ee_truth.push_back(edge_edge_ccd(q).hit);

@@ -8,10 +8,9 @@
 
 #include "command.hpp"
 #include "detection_options.hpp"
-#include "tailor/candidates/isolated_set.hpp"
-#include "tailor/candidates/primitive_pair_generator.hpp"
 #include "tailor/ccd/query_writer.hpp"
 #include "tailor/detection/brute_force.hpp"
+#include "tailor/detection/ccd_query_export.hpp"
 #include "tailor/detection/self_collision_detector.hpp"
 #include "tailor/geometry/error.hpp"
 #include "tailor/io/mesh_io.hpp"
@@ -58,41 +57,16 @@ void print_stats(const DetectionStats& s) {
       s.refit_ms, s.traversal_ms, s.pair_generation_ms, s.ccd_ms, s.total_ms);
 }
 
-// The VF and EE pairs the detector sent to the exact CCD, regenerated from its candidate
-// triangle pairs with the same low-level options, written as query CSVs
-// (`PREFIXvf.csv`, `PREFIXee.csv`) for benchmarks and ccd-check.
+// The queries the detector sent to the exact CCD, written as query CSVs (`PREFIXvf.csv`,
+// `PREFIXee.csv`) for benchmarks and ccd-check.
 void dump_queries(const std::string& prefix, const TriangleMesh& mesh, const Positions& x0,
                   const Positions& x1, const DetectionConfig& config,
                   const std::vector<TrianglePair>& ctps) {
-  const IsolatedSet isolated = config.adjacency_culling ? IsolatedSet::build(mesh) : IsolatedSet{};
-  PrimitivePairGenerator generator(mesh);
-  std::vector<VertexFacePair> vf_pairs;
-  std::vector<EdgeEdgePair> ee_pairs;
-  LowLevelCounts counts;
-  generator.generate(ctps, isolated, x0, x1,
-                     {config.feature_assignment, config.primitive_boxes, config.coplanarity_filter,
-                      config.adjacency_culling},
-                     vf_pairs, ee_pairs, counts);
-  const FaceArray& faces = mesh.faces();
-  const EdgeArray& edges = mesh.edges();
-  std::vector<VertexFaceQuery> vf;
-  vf.reserve(vf_pairs.size());
-  for (const auto& [v, f] : vf_pairs) {
-    const Index a = faces(f, 0), b = faces(f, 1), c = faces(f, 2);
-    vf.push_back(
-        {x0.row(v), x0.row(a), x0.row(b), x0.row(c), x1.row(v), x1.row(a), x1.row(b), x1.row(c)});
-  }
-  std::vector<EdgeEdgeQuery> ee;
-  ee.reserve(ee_pairs.size());
-  for (const auto& [e1, e2] : ee_pairs) {
-    const Index a = edges(e1, 0), b = edges(e1, 1), c = edges(e2, 0), d = edges(e2, 1);
-    ee.push_back(
-        {x0.row(a), x0.row(b), x0.row(c), x0.row(d), x1.row(a), x1.row(b), x1.row(c), x1.row(d)});
-  }
-  write_ccd_queries(prefix + "vf.csv", vf);
-  write_ccd_queries(prefix + "ee.csv", ee);
-  fmt::print("dumped     : {} VF queries to {}vf.csv, {} EE queries to {}ee.csv\n", vf.size(),
-             prefix, ee.size(), prefix);
+  const StepCcdQueries queries = step_ccd_queries(mesh, x0, x1, config, ctps);
+  write_ccd_queries(prefix + "vf.csv", queries.vertex_face);
+  write_ccd_queries(prefix + "ee.csv", queries.edge_edge);
+  fmt::print("dumped     : {} VF queries to {}vf.csv, {} EE queries to {}ee.csv\n",
+             queries.vertex_face.size(), prefix, queries.edge_edge.size(), prefix);
 }
 
 int run_detect(const DetectArgs& args) {

@@ -3,9 +3,7 @@
 /// Running the built `tailor` CLI from a test: exit code and output.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -13,34 +11,8 @@
 
 namespace tailor::test {
 
-/// What a CLI run gave: the exit code (-1 if it did not exit normally) and its stdout and
-/// stderr together.
-struct RunResult {
-  int exit_code = -1;
-  std::string output;
-};
-
-/// Runs `tailor <arguments>` through the shell (arguments are passed as written).
-inline RunResult run_cli(const std::string& arguments) {
-  const std::string command = std::string("'") + TAILOR_CLI_PATH + "' " + arguments + " 2>&1";
-  RunResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.output.append(buffer, n);
-  const int status = pclose(pipe);
-  if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
-  return result;
-}
-
-/// Single-quotes a path for the shell (appends piecewise: GCC 12 warns on "'" + string&&).
-inline std::string quoted(const std::filesystem::path& path) {
-  std::string text = "'";
-  text += path.string();
-  text += '\'';
-  return text;
-}
+/// What a CLI run gave (run_cli() and quoted() are in io/io_test_support.hpp).
+using RunResult = CliResult;
 
 /// A file from the reference data (../shared/data).
 inline std::filesystem::path data_file(const std::string& relative) {

@@ -116,7 +116,8 @@ TEST(CliHostileInput, OutputFoldersAreCheckedFirst) {
   test::write_bytes(dir / "existing", "a file, not a folder");
   expect_usage_error(run_cli("generate --triangles 200 --out " + quoted(dir / "existing")),
                      {"existing", "output folder"});
-  for (const char* run : {"scale --max-triangles 1000 --repetitions 1", "paper --frames 1"}) {
+  for (const char* run :
+       {"scale --min-triangles 1000 --max-triangles 1000 --repetitions 1", "paper --frames 1"}) {
     const CliResult r = run_cli(std::string("bench ") + run + " --out " + quoted(dir / "existing"));
     expect_usage_error(r, {"existing", "output folder"});
     EXPECT_EQ(r.output.find("| scene"), std::string::npos) << "the benchmark ran: " << r.output;

@@ -95,7 +95,10 @@ async function simulationChecks(browser) {
   let sim = option('--sim', null);
   if (!sim) {
     sim = join(work, 'sim');
-    run(['simulate', '--frames', option('--frames', sanitized ? '4' : '8'), '--out', sim]);
+    // Tang's preset (no radial view): candidate triangles from the first frames on; the
+    // paper preset culls every candidate until the elbow bends (frame ~22).
+    run(['simulate', '--frames', option('--frames', sanitized ? '4' : '8'), '--method', 'tang',
+      '--out', sim]);
   }
   sim = resolve(sim);
   // The fixture puts collisions and an observer in every frame; a real run may have none.
