@@ -18,7 +18,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// Cloth vertices are kept this many contact thicknesses outside the implicit arm.
+/// Cloth faces are kept this many contact thicknesses outside the implicit arm (the
+/// skinned mesh sticks out of it by up to about 1.3 mm, see Arm).
 constexpr double kArmMarginFactor = 1.5;
 /// Arm contact springs are this many times stiffer than a vertex's inertia (m / h²).
 constexpr double kArmContactStiffness = 1e3;
@@ -29,6 +30,25 @@ constexpr int kContactStrainSweeps = 20;
 
 double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+double longest_edge(const TriangleMesh& mesh, const Positions& x) {
+  double longest = 0;
+  for (Eigen::Index e = 0; e < mesh.edges().rows(); ++e) {
+    longest = std::max(longest, (x.row(mesh.edges()(e, 0)) - x.row(mesh.edges()(e, 1))).norm());
+  }
+  return longest;
+}
+
+/// How far outside the implicit arm the cloth vertices are kept: enough for every point of
+/// every face to clear it by kArmMarginFactor thicknesses (face_clearance_margin), so
+/// coarse sleeves with long edges do not cut into the arm between their vertices.
+double arm_margin_for(const SceneConfig& config, const Sleeve& sleeve) {
+  const ArmParams& a = config.arm;
+  const double min_radius = std::min({a.shoulder_radius, a.elbow_radius, a.wrist_radius});
+  return face_clearance_margin(min_radius, longest_edge(*sleeve.mesh, sleeve.rest),
+                               config.material.strain_limit,
+                               kArmMarginFactor * config.contact.thickness);
 }
 
 }  // namespace
@@ -88,6 +108,7 @@ struct Simulation::Impl {
   std::vector<double> normal_forces;  // arm contact normal force of the last step (N)
   StrainLimiter limiter;
   std::vector<Index> projected_ids;
+  double arm_margin = 0;  // cloth vertices are kept this far outside the implicit arm (m)
   Positions x, v, y;
   ArmSkeleton skeleton;
   int frame = 0;
@@ -113,6 +134,7 @@ struct Simulation::Impl {
                                config.material.strain_limit);
         }()) {
     const Sleeve& sleeve = scene.sleeve();
+    arm_margin = arm_margin_for(config, sleeve);
     pinned = sleeve.pinned_vertices();
     cloth.set_pinned(pinned);
     cloth.set_solver(options.solver, options.cg_tolerance);
@@ -166,7 +188,7 @@ struct Simulation::Impl {
 
     // Cloth on the arm: contact springs and friction in the solve, then strain limiting
     // and a safety projection out of the implicit arm, alternately.
-    const double margin = kArmMarginFactor * config.contact.thickness;
+    const double margin = arm_margin;
     const double arm_friction =
         options.arm_friction >= 0 ? options.arm_friction : config.contact.friction;
     const ArmContactSettings arm_settings{margin, 0.5 * margin, kArmContactStiffness, arm_friction};
@@ -313,6 +335,9 @@ ClothEnergy Simulation::energy() const {
 const SimulationTotals& Simulation::totals() const {
   return m_impl->totals;
 }
+double Simulation::arm_margin() const {
+  return m_impl->arm_margin;
+}
 
 std::vector<Vec3> Simulation::observer_positions() const {
   std::vector<Vec3> out;
@@ -382,6 +407,7 @@ nlohmann::json simulation_summary(const Simulation& simulation, bool interrupted
                 {"faces", simulation.cloth_mesh().num_faces()}};
   j["arm"] = {{"vertices", simulation.arm_mesh().num_vertices()},
               {"faces", simulation.arm_mesh().num_faces()}};
+  j["arm_margin"] = simulation.arm_margin();
   j["scene"] = scene_config_to_json(simulation.scene().config());
   return j;
 }

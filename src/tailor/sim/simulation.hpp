@@ -125,6 +125,9 @@ class Simulation {
   ClothEnergy energy() const;
   /// Sums over the substeps run so far.
   const SimulationTotals& totals() const;
+  /// How far outside the implicit arm cloth vertices are kept (m): 1.5 contact thicknesses,
+  /// more for coarse sleeves so that their faces clear the arm too (face_clearance_margin).
+  double arm_margin() const;
   /// Radial-view observer positions now, one per cluster (empty without radial view).
   std::vector<Vec3> observer_positions() const;
   /// Radial-view cluster id of every cloth face (empty without radial view).
