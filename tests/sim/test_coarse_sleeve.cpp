@@ -11,8 +11,10 @@
 #include <functional>
 #include <random>
 #include <string>
+#include <utility>
 
 #include "support/sanitized.hpp"
+#include "tailor/geometry/error.hpp"
 #include "tailor/sim/arm_collision.hpp"
 #include "tailor/sim/simulation.hpp"
 
@@ -86,6 +88,30 @@ TEST(CoarseSleeve, ArmMarginGrowsWithTheEdgeLength) {
   const double fine_margin = Simulation(fine, options).arm_margin();
   EXPECT_GE(fine_margin, 1.5 * fine.contact.thickness);
   EXPECT_GT(Simulation(coarse, options).arm_margin(), fine_margin);
+}
+
+// Sleeves whose margin would exceed their slack do not provably clear the arm at rest and
+// cannot keep the margin without inflating: 2 × 3, 3 × 4, 4 × 6 and 3 × 8 ended in
+// intersections. They are refused with a message naming the resolution.
+TEST(CoarseSleeve, TooCoarseSleevesAreRejected) {
+  SimulationOptions options;
+  options.contact = false;
+  for (const auto& [rings, segments] : {std::pair{2, 3}, {3, 4}, {4, 6}, {3, 8}}) {
+    SceneConfig c;
+    c.sleeve.rings = rings;
+    c.sleeve.segments = segments;
+    try {
+      Simulation sim(c, options);
+      ADD_FAILURE() << rings << " x " << segments << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::to_string(rings) + " rings"), std::string::npos)
+          << e.what();
+    }
+  }
+  SceneConfig c;
+  c.sleeve.rings = 9;
+  c.sleeve.segments = 12;
+  EXPECT_LE(Simulation(c, options).arm_margin(), c.sleeve.slack);
 }
 
 // The bound against the implicit arm itself (union of two round cones, elbow bent 130°):

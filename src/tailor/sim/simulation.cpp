@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "tailor/culling/radial_view.hpp"
 #include "tailor/detection/intersection_check.hpp"
+#include "tailor/geometry/error.hpp"
 #include "tailor/sim/arm_collision.hpp"
 #include "tailor/sim/strain_limiter.hpp"
 
@@ -42,13 +44,26 @@ double longest_edge(const TriangleMesh& mesh, const Positions& x) {
 
 /// How far outside the implicit arm the cloth vertices are kept: enough for every point of
 /// every face to clear it by kArmMarginFactor thicknesses (face_clearance_margin), so
-/// coarse sleeves with long edges do not cut into the arm between their vertices.
+/// coarse sleeves with long edges do not cut into the arm between their vertices. A sleeve
+/// so coarse that this margin exceeds its slack (the room it has around the arm at rest)
+/// is rejected: its rest shape does not provably clear the arm, and it would have to
+/// inflate against the strain limit to keep the margin (2 × 3 is a triangular tube through
+/// the arm; 3 × 4 has 26 cm edges that cannot bend round the elbow).
 double arm_margin_for(const SceneConfig& config, const Sleeve& sleeve) {
   const ArmParams& a = config.arm;
   const double min_radius = std::min({a.shoulder_radius, a.elbow_radius, a.wrist_radius});
-  return face_clearance_margin(min_radius, longest_edge(*sleeve.mesh, sleeve.rest),
-                               config.material.strain_limit,
-                               kArmMarginFactor * config.contact.thickness);
+  const double longest = longest_edge(*sleeve.mesh, sleeve.rest);
+  const double margin = face_clearance_margin(min_radius, longest, config.material.strain_limit,
+                                              kArmMarginFactor * config.contact.thickness);
+  if (margin > config.sleeve.slack) {
+    throw InputError(fmt::format(
+        "sleeve too coarse: {} rings × {} segments has edges up to {:.1f} cm, so the cloth must "
+        "be kept {:.1f} cm off the arm for its faces to clear it, more than the sleeve's slack "
+        "of {:.1f} cm; use more rings or segments",
+        config.sleeve.rings, config.sleeve.segments, 100 * longest, 100 * margin,
+        100 * config.sleeve.slack));
+  }
+  return margin;
 }
 
 }  // namespace

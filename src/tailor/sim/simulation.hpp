@@ -93,6 +93,8 @@ struct SimulationTotals {
 class Simulation {
  public:
   /// Builds the scene, the cloth model (shoulder ring pinned) and the contact solver.
+  /// Throws InputError (naming the resolution) for a sleeve too coarse for its faces to
+  /// clear the arm: one whose arm_margin() would exceed the sleeve's slack.
   explicit Simulation(const SceneConfig& config, SimulationOptions options = {});
   ~Simulation();
   Simulation(Simulation&&) noexcept;
