@@ -193,7 +193,7 @@ int run_cli(const std::vector<std::string>& args) {
 TEST(RenderCommand, RendersASimulationFolder) {
   const fs::path out = fs::temp_directory_path() / "tailor_test_render";
   fs::remove_all(out);
-  ASSERT_EQ(run_cli({"simulate", "--frames", "2", "--rings", "6", "--segments", "10", "--out",
+  ASSERT_EQ(run_cli({"simulate", "--frames", "2", "--rings", "9", "--segments", "12", "--out",
                      out.string(), "--threads", "1"}),
             0);
   fs::remove(out / "contact_sheet.png");
@@ -222,7 +222,7 @@ TEST(RenderCommand, BadInputExitsWithCode2) {
   // A folder whose contact file is malformed or names a face that does not exist.
   const fs::path out = fs::temp_directory_path() / "tailor_test_render_bad";
   fs::remove_all(out);
-  ASSERT_EQ(run_cli({"simulate", "--frames", "1", "--rings", "4", "--segments", "6", "--out",
+  ASSERT_EQ(run_cli({"simulate", "--frames", "1", "--rings", "9", "--segments", "12", "--out",
                      out.string(), "--threads", "1"}),
             0);
   std::ofstream(out / frame_file_name("contacts", 1, ".json")) << "{\"candidate_triangles\": [1,";
@@ -230,7 +230,7 @@ TEST(RenderCommand, BadInputExitsWithCode2) {
   std::ofstream(out / frame_file_name("contacts", 1, ".json"))
       << "{\"candidate_triangles\": [9999]}";
   EXPECT_EQ(run_cli({"render", out.string()}), 2);
-  EXPECT_THROW(read_candidate_triangles(out / frame_file_name("contacts", 1, ".json"), 36),
+  EXPECT_THROW(read_candidate_triangles(out / frame_file_name("contacts", 1, ".json"), 192),
                InputError);
   EXPECT_EQ(run_cli({"render", out.string(), "--width", "5"}), 2);
 }

@@ -182,8 +182,8 @@ TEST(SimulateCommand, WritesFramesStepsAndSummary) {
   const fs::path out = fs::temp_directory_path() / "tailor_test_simulate";
   fs::remove_all(out);
   const int frames = 3;
-  ASSERT_EQ(run_cli({"simulate", "--frames", std::to_string(frames), "--rings", "6", "--segments",
-                     "10", "--out", out.string(), "--check-intersections", "--threads", "1"}),
+  ASSERT_EQ(run_cli({"simulate", "--frames", std::to_string(frames), "--rings", "9", "--segments",
+                     "12", "--out", out.string(), "--check-intersections", "--threads", "1"}),
             0);
   for (int f = 0; f <= frames; ++f) {
     EXPECT_TRUE(fs::exists(out / frame_file_name("cloth", f))) << f;
@@ -210,7 +210,7 @@ TEST(SimulateCommand, WritesFramesStepsAndSummary) {
   EXPECT_EQ(s["steps"], frames * substeps);
   EXPECT_EQ(s["intersections"], 0);
   EXPECT_EQ(s["interrupted"], false);
-  EXPECT_EQ(s["cloth"]["vertices"], 60);
+  EXPECT_EQ(s["cloth"]["vertices"], 108);
   // The per-frame contact files (the shared contract with the viewer and the renderer).
   EXPECT_FALSE(fs::exists(out / frame_file_name("contacts", 0, ".json")));
   for (int f = 1; f <= frames; ++f) {
@@ -221,7 +221,7 @@ TEST(SimulateCommand, WritesFramesStepsAndSummary) {
     const auto& faces = c["candidate_triangles"];
     for (std::size_t i = 0; i < faces.size(); ++i) {
       EXPECT_GE(faces[i].get<int>(), 0);
-      EXPECT_LT(faces[i].get<int>(), 2 * 5 * 10);  // 6 rings × 10 segments: 100 faces
+      EXPECT_LT(faces[i].get<int>(), 2 * 8 * 12);  // 9 rings × 12 segments: 192 faces
       if (i > 0) {
         EXPECT_LT(faces[i - 1].get<int>(), faces[i].get<int>());  // sorted, unique
       }
@@ -235,7 +235,7 @@ TEST(SimulateCommand, WritesFramesStepsAndSummary) {
     EXPECT_EQ(c["observers"].size(), 2u);  // the paper preset has radial view, 2 observers
   }
   const auto clusters = read_json(out / "clusters.json");
-  EXPECT_EQ(clusters["cluster_of_face"].size(), 100u);
+  EXPECT_EQ(clusters["cluster_of_face"].size(), 192u);
   // The contact sheet is always written.
   EXPECT_TRUE(fs::exists(out / "contact_sheet.png"));
 }
@@ -243,7 +243,7 @@ TEST(SimulateCommand, WritesFramesStepsAndSummary) {
 TEST(SimulateCommand, NoContactsWritesNoContactFilesAndRenderWritesFramePictures) {
   const fs::path out = fs::temp_directory_path() / "tailor_test_simulate_nocontacts";
   fs::remove_all(out);
-  ASSERT_EQ(run_cli({"simulate", "--frames", "2", "--rings", "6", "--segments", "10", "--out",
+  ASSERT_EQ(run_cli({"simulate", "--frames", "2", "--rings", "9", "--segments", "12", "--out",
                      out.string(), "--no-contacts", "--render", "--threads", "1"}),
             0);
   EXPECT_FALSE(fs::exists(out / frame_file_name("contacts", 1, ".json")));
@@ -255,6 +255,8 @@ TEST(SimulateCommand, RejectsBadInputWithExitCode2) {
   EXPECT_EQ(run_cli({"simulate", "--method", "fastest", "--frames", "1"}), 2);
   EXPECT_EQ(run_cli({"simulate", "--gesture", "wave", "--frames", "1"}), 2);
   EXPECT_EQ(run_cli({"simulate", "--scene", "/nonexistent/scene.json"}), 2);
+  // Too coarse for its faces to clear the arm (see Simulation): rejected, not run.
+  EXPECT_EQ(run_cli({"simulate", "--frames", "1", "--rings", "4", "--segments", "6"}), 2);
 }
 
 TEST(SimulateCommand, CtrlCStopsAfterTheFrameWithAValidSummary) {

@@ -4,6 +4,7 @@
 #include "tailor/sim/arm_collision.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace tailor {
 namespace {
@@ -13,6 +14,13 @@ std::array<Eigen::Isometry3d, 2> bone_motion(const ArmSkeleton& s0, const ArmSke
 }
 
 }  // namespace
+
+double face_clearance_margin(double min_arm_radius, double longest_rest_edge, double max_strain,
+                             double clearance) {
+  const double r = min_arm_radius;
+  const double rho = (1 + max_strain) * longest_rest_edge / std::sqrt(3.0);
+  return std::max(clearance, std::sqrt((r + clearance) * (r + clearance) + rho * rho) - r);
+}
 
 std::vector<ContactPlane> arm_contact_planes(const Arm& arm, const ArmSkeleton& skeleton0,
                                              const ArmSkeleton& skeleton1, const Positions& x0,

@@ -29,6 +29,28 @@ struct ArmContactSettings {
   double friction = 0;         ///< Coulomb coefficient cloth-skin
 };
 
+/// The margin (m) at which cloth vertices must be kept outside the implicit arm so that
+/// every point of every cloth face, not only its vertices, is at least `clearance` outside.
+///
+/// Why: a vertex-only margin lets a long edge or a large face cut into a convex part of the
+/// arm between its vertices (its sagitta); with a coarse sleeve (13 × 20: 4.4 cm edges
+/// along the arm) over the flexed elbow that is several millimetres, the cloth then cuts
+/// through the skinned arm mesh faster than the CCD impulses can undo it.
+///
+/// The bound: the implicit arm is a union of balls of radius at least `min_arm_radius`
+/// (each round cone is swept by balls between its end radii). Take one ball (centre c,
+/// radius r) and a triangle whose vertices are all at least r + m from c, and a circle of
+/// radius ρ around the triangle in its plane (centre o). ψ(x) = |x - c|² - |x - o|² + ρ² is
+/// affine in x and at least (r + m)² at every vertex (|v - o| ≤ ρ), hence on the whole
+/// triangle, so |x - c|² ≥ (r + m)² - ρ² there. The clearance sqrt((r + m)² - ρ²) - r grows
+/// with r, so the smallest ball is the worst, and m = sqrt((r + clearance)² + ρ²) - r
+/// gives every face point the clearance. A triangle with longest edge L has an enclosing
+/// circle of radius ρ ≤ L / √3 (equilateral is the worst case); with the strain limit
+/// the longest deformed edge is (1 + max_strain) times the longest rest edge. The result
+/// is at least `clearance` (the vertex margin on its own).
+double face_clearance_margin(double min_arm_radius, double longest_rest_edge, double max_strain,
+                             double clearance);
+
 /// Contact planes for the implicit solve of a substep of length `h`: every vertex not
 /// `fixed` and not `released` that is within `margin + activation` of the implicit arm of
 /// `skeleton0` gets a plane `margin` outside the arm of `skeleton1`, carried along by the

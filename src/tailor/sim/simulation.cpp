@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "tailor/culling/radial_view.hpp"
 #include "tailor/detection/intersection_check.hpp"
+#include "tailor/geometry/error.hpp"
 #include "tailor/sim/arm_collision.hpp"
 #include "tailor/sim/strain_limiter.hpp"
 
@@ -18,7 +20,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// Cloth vertices are kept this many contact thicknesses outside the implicit arm.
+/// Cloth faces are kept this many contact thicknesses outside the implicit arm (the
+/// skinned mesh sticks out of it by up to about 1.3 mm, see Arm).
 constexpr double kArmMarginFactor = 1.5;
 /// Arm contact springs are this many times stiffer than a vertex's inertia (m / h²).
 constexpr double kArmContactStiffness = 1e3;
@@ -29,6 +32,38 @@ constexpr int kContactStrainSweeps = 20;
 
 double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+double longest_edge(const TriangleMesh& mesh, const Positions& x) {
+  double longest = 0;
+  for (Eigen::Index e = 0; e < mesh.edges().rows(); ++e) {
+    longest = std::max(longest, (x.row(mesh.edges()(e, 0)) - x.row(mesh.edges()(e, 1))).norm());
+  }
+  return longest;
+}
+
+/// How far outside the implicit arm the cloth vertices are kept: enough for every point of
+/// every face to clear it by kArmMarginFactor thicknesses (face_clearance_margin), so
+/// coarse sleeves with long edges do not cut into the arm between their vertices. A sleeve
+/// so coarse that this margin exceeds its slack (the room it has around the arm at rest)
+/// is rejected: its rest shape does not provably clear the arm, and it would have to
+/// inflate against the strain limit to keep the margin (2 × 3 is a triangular tube through
+/// the arm; 3 × 4 has 26 cm edges that cannot bend round the elbow).
+double arm_margin_for(const SceneConfig& config, const Sleeve& sleeve) {
+  const ArmParams& a = config.arm;
+  const double min_radius = std::min({a.shoulder_radius, a.elbow_radius, a.wrist_radius});
+  const double longest = longest_edge(*sleeve.mesh, sleeve.rest);
+  const double margin = face_clearance_margin(min_radius, longest, config.material.strain_limit,
+                                              kArmMarginFactor * config.contact.thickness);
+  if (margin > config.sleeve.slack) {
+    throw InputError(fmt::format(
+        "sleeve too coarse: {} rings × {} segments has edges up to {:.1f} cm, so the cloth must "
+        "be kept {:.1f} cm off the arm for its faces to clear it, more than the sleeve's slack "
+        "of {:.1f} cm; use more rings or segments",
+        config.sleeve.rings, config.sleeve.segments, 100 * longest, 100 * margin,
+        100 * config.sleeve.slack));
+  }
+  return margin;
 }
 
 }  // namespace
@@ -88,6 +123,7 @@ struct Simulation::Impl {
   std::vector<double> normal_forces;  // arm contact normal force of the last step (N)
   StrainLimiter limiter;
   std::vector<Index> projected_ids;
+  double arm_margin = 0;  // cloth vertices are kept this far outside the implicit arm (m)
   Positions x, v, y;
   ArmSkeleton skeleton;
   int frame = 0;
@@ -113,6 +149,7 @@ struct Simulation::Impl {
                                config.material.strain_limit);
         }()) {
     const Sleeve& sleeve = scene.sleeve();
+    arm_margin = arm_margin_for(config, sleeve);
     pinned = sleeve.pinned_vertices();
     cloth.set_pinned(pinned);
     cloth.set_solver(options.solver, options.cg_tolerance);
@@ -166,7 +203,7 @@ struct Simulation::Impl {
 
     // Cloth on the arm: contact springs and friction in the solve, then strain limiting
     // and a safety projection out of the implicit arm, alternately.
-    const double margin = kArmMarginFactor * config.contact.thickness;
+    const double margin = arm_margin;
     const double arm_friction =
         options.arm_friction >= 0 ? options.arm_friction : config.contact.friction;
     const ArmContactSettings arm_settings{margin, 0.5 * margin, kArmContactStiffness, arm_friction};
@@ -313,6 +350,9 @@ ClothEnergy Simulation::energy() const {
 const SimulationTotals& Simulation::totals() const {
   return m_impl->totals;
 }
+double Simulation::arm_margin() const {
+  return m_impl->arm_margin;
+}
 
 std::vector<Vec3> Simulation::observer_positions() const {
   std::vector<Vec3> out;
@@ -382,6 +422,7 @@ nlohmann::json simulation_summary(const Simulation& simulation, bool interrupted
                 {"faces", simulation.cloth_mesh().num_faces()}};
   j["arm"] = {{"vertices", simulation.arm_mesh().num_vertices()},
               {"faces", simulation.arm_mesh().num_faces()}};
+  j["arm_margin"] = simulation.arm_margin();
   j["scene"] = scene_config_to_json(simulation.scene().config());
   return j;
 }

@@ -93,6 +93,8 @@ struct SimulationTotals {
 class Simulation {
  public:
   /// Builds the scene, the cloth model (shoulder ring pinned) and the contact solver.
+  /// Throws InputError (naming the resolution) for a sleeve too coarse for its faces to
+  /// clear the arm: one whose arm_margin() would exceed the sleeve's slack.
   explicit Simulation(const SceneConfig& config, SimulationOptions options = {});
   ~Simulation();
   Simulation(Simulation&&) noexcept;
@@ -125,6 +127,9 @@ class Simulation {
   ClothEnergy energy() const;
   /// Sums over the substeps run so far.
   const SimulationTotals& totals() const;
+  /// How far outside the implicit arm cloth vertices are kept (m): 1.5 contact thicknesses,
+  /// more for coarse sleeves so that their faces clear the arm too (face_clearance_margin).
+  double arm_margin() const;
   /// Radial-view observer positions now, one per cluster (empty without radial view).
   std::vector<Vec3> observer_positions() const;
   /// Radial-view cluster id of every cloth face (empty without radial view).
