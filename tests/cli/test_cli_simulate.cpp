@@ -15,7 +15,7 @@ TEST(CliSimulate, Help) {
 TEST(CliSimulate, OneFrameOfASmallSleeve) {
   TempDir dir;
   const RunResult r =
-      run_cli("simulate --frames 1 --rings 6 --segments 10 --out " + quoted(dir / "run"));
+      run_cli("simulate --frames 1 --rings 9 --segments 12 --out " + quoted(dir / "run"));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   expect_contains(r.output, {"simulation summary", "frames"});
   EXPECT_TRUE(std::filesystem::exists(dir / "run" / "summary.json"));
