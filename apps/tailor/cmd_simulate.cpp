@@ -52,8 +52,13 @@ std::pair<Vec3, Vec3> run_bounds(const Simulation& sim) {
     }
   };
   extend(sim.cloth_positions());
-  for (int f = 0; f <= c.frames; ++f)
+  // The pose holds after the gesture's last key: frames past it add nothing (a run of
+  // 100,000 frames used to skin the arm 100,000 times before its first frame).
+  const double duration = scene.gesture().duration();
+  for (int f = 0; f <= c.frames; ++f) {
     extend(scene.arm().skin(scene.gesture().pose_at(f * c.time_step)));
+    if (f * c.time_step > duration) break;
+  }
   return {lo, hi};
 }
 
