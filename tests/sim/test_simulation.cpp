@@ -251,6 +251,22 @@ TEST(SimulateCommand, NoContactsWritesNoContactFilesAndRenderWritesFramePictures
   for (int f = 0; f <= 2; ++f) EXPECT_TRUE(fs::exists(out / frame_file_name("render", f, ".png")));
 }
 
+TEST(SimulateCommand, StaticCheckOnlyWhenAsked) {
+  const fs::path out = fs::temp_directory_path() / "tailor_test_simulate_checks";
+  const auto checked_steps = [&](std::vector<std::string> extra) {
+    fs::remove_all(out);
+    std::vector<std::string> args{"simulate",   "--frames",      "2",         "--rings",
+                                  "9",          "--segments",    "12",        "--out",
+                                  out.string(), "--no-contacts", "--threads", "1"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    EXPECT_EQ(run_cli(args), 0);
+    return read_json(out / "summary.json")["checked_steps"].get<int>();
+  };
+  EXPECT_EQ(checked_steps({}), 0);
+  EXPECT_EQ(checked_steps({"--check-frames"}), 2);
+  EXPECT_EQ(checked_steps({"--check-intersections"}), 2 * SceneConfig{}.substeps);
+}
+
 TEST(SimulateCommand, RejectsBadInputWithExitCode2) {
   EXPECT_EQ(run_cli({"simulate", "--method", "fastest", "--frames", "1"}), 2);
   EXPECT_EQ(run_cli({"simulate", "--gesture", "wave", "--frames", "1"}), 2);

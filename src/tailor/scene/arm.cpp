@@ -49,8 +49,12 @@ void check_positive(double value, const char* name) {
 
 }  // namespace
 
-double round_cone_distance(const Vec3& p, const Vec3& a, const Vec3& b, double ra, double rb) {
-  // Exact distance to a sphere-swept segment with linearly varying radius (I. Quilez).
+double round_cone_distance(const Vec3& p, const Vec3& a, const Vec3& b, double ra, double rb,
+                           Vec3* normal) {
+  // Exact distance to a sphere-swept segment with linearly varying radius (I. Quilez);
+  // the outward normal is the gradient of the branch taken: from the centre of the end
+  // sphere, or along the cone's slanted side (the perpendicular direction from the axis
+  // tilted by the slope, whose cosine is sqrt(a2 / l2) and sine rr / l).
   const Vec3 ba = b - a;
   const double l2 = ba.squaredNorm();
   const double rr = ra - rb;
@@ -59,12 +63,28 @@ double round_cone_distance(const Vec3& p, const Vec3& a, const Vec3& b, double r
   const Vec3 pa = p - a;
   const double y = pa.dot(ba);
   const double z = y - l2;
-  const double x2 = (pa * l2 - ba * y).squaredNorm();
+  const Vec3 across = pa * l2 - ba * y;  // l2 times the component of pa across the axis
+  const double x2 = across.squaredNorm();
   const double y2 = y * y * l2;
   const double z2 = z * z * l2;
   const double k = sign_of(rr) * rr * rr * x2;
-  if (sign_of(z) * a2 * z2 > k) return std::sqrt(x2 + z2) * il2 - rb;
-  if (sign_of(y) * a2 * y2 < k) return std::sqrt(x2 + y2) * il2 - ra;
+  const auto unit_or_keep = [&](const Vec3& v) {
+    const double n = v.norm();
+    if (normal != nullptr && n > 0) *normal = v / n;
+  };
+  if (sign_of(z) * a2 * z2 > k) {
+    unit_or_keep(p - b);
+    return std::sqrt(x2 + z2) * il2 - rb;
+  }
+  if (sign_of(y) * a2 * y2 < k) {
+    unit_or_keep(p - a);
+    return std::sqrt(x2 + y2) * il2 - ra;
+  }
+  if (normal != nullptr) {
+    const double x = std::sqrt(x2);
+    if (x > 0)
+      *normal = std::sqrt(a2 * il2) * (across / x) + (rr / std::sqrt(l2)) * (ba / std::sqrt(l2));
+  }
   return (std::sqrt(x2 * a2 * il2) + y * rr) * il2 - ra;
 }
 
@@ -228,26 +248,15 @@ double Arm::signed_distance(const ArmSkeleton& s, const Vec3& p) const {
 ArmDistance Arm::distance(const ArmSkeleton& s, const Vec3& p) const {
   const Vec3 wrist = s.wrist(m_params.forearm_length);
   const Vec3 a = s.shoulder(), e = s.elbow();
-  const double du = round_cone_distance(p, a, e, m_params.shoulder_radius, m_params.elbow_radius);
-  const double df = round_cone_distance(p, e, wrist, m_params.elbow_radius, m_params.wrist_radius);
+  Vec3 nu = Vec3::UnitY(), nf = Vec3::UnitY();
+  const double du =
+      round_cone_distance(p, a, e, m_params.shoulder_radius, m_params.elbow_radius, &nu);
+  const double df =
+      round_cone_distance(p, e, wrist, m_params.elbow_radius, m_params.wrist_radius, &nf);
   ArmDistance out;
   out.bone = df < du ? 1 : 0;
   out.distance = std::min(du, df);
-  // Central differences of the nearer cone: exact enough and valid on both sides.
-  const double h = 1e-6 * (m_params.upper_arm_length + m_params.forearm_length);
-  const auto f = [&](const Vec3& q) {
-    return out.bone == 0
-               ? round_cone_distance(q, a, e, m_params.shoulder_radius, m_params.elbow_radius)
-               : round_cone_distance(q, e, wrist, m_params.elbow_radius, m_params.wrist_radius);
-  };
-  Vec3 g;
-  for (int c = 0; c < 3; ++c) {
-    Vec3 dp = Vec3::Zero();
-    dp[c] = h;
-    g[c] = (f(p + dp) - f(p - dp)) / (2 * h);
-  }
-  const double n = g.norm();
-  if (n > 1e-12) out.normal = g / n;
+  out.normal = out.bone == 0 ? nu : nf;  // the nearer cone's gradient (analytic)
   return out;
 }
 

@@ -112,7 +112,10 @@ class Arm {
 };
 
 /// Signed distance from `p` to the round cone (sphere-swept segment with linearly varying
-/// radius) from `a` (radius `ra`) to `b` (radius `rb`); exact.
-double round_cone_distance(const Vec3& p, const Vec3& a, const Vec3& b, double ra, double rb);
+/// radius) from `a` (radius `ra`) to `b` (radius `rb`); exact. When `normal` is given it
+/// receives the outward unit gradient of the distance at `p` (left unchanged where that is
+/// undefined: at an end sphere's centre or on the axis inside the cone).
+double round_cone_distance(const Vec3& p, const Vec3& a, const Vec3& b, double ra, double rb,
+                           Vec3* normal = nullptr);
 
 }  // namespace tailor

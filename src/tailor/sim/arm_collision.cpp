@@ -15,6 +15,11 @@ std::array<Eigen::Isometry3d, 2> bone_motion(const ArmSkeleton& s0, const ArmSke
 
 }  // namespace
 
+void ArmClearanceCache::reset(Index vertices) {
+  m_where.assign(static_cast<std::size_t>(vertices), Vec3::Zero());
+  m_clearance.assign(static_cast<std::size_t>(vertices), 0.0);
+}
+
 double face_clearance_margin(double min_arm_radius, double longest_rest_edge, double max_strain,
                              double clearance) {
   const double r = min_arm_radius;
@@ -35,12 +40,13 @@ std::vector<ContactPlane> arm_contact_planes(const Arm& arm, const ArmSkeleton& 
     const auto k = static_cast<std::size_t>(i);
     if (!fixed.empty() && fixed[k] != 0) continue;
     const Vec3 p = x0.row(i).transpose();
-    const ArmDistance d0 = arm.distance(skeleton0, p);
-    if (d0.distance > settings.margin + settings.activation) {
+    // The plain distance first: most vertices are away from the arm and need no normal.
+    if (arm.signed_distance(skeleton0, p) > settings.margin + settings.activation) {
       released[k] = 0;  // away from the arm: the next touch is a new contact
       continue;
     }
     if (released[k] != 0) continue;
+    const ArmDistance d0 = arm.distance(skeleton0, p);
     const Vec3 carried = motion[static_cast<std::size_t>(d0.bone)] * p;
     const ArmDistance d1 = arm.distance(skeleton1, carried);
     ContactPlane c;
@@ -78,7 +84,7 @@ ArmCollisionStats project_out_of_arm(const Arm& arm, const ArmSkeleton& skeleton
                                      const ArmSkeleton& skeleton1, const Positions& x0,
                                      Positions& x1, double margin, double friction,
                                      const std::vector<char>& fixed,
-                                     std::vector<Index>* projected_ids) {
+                                     std::vector<Index>* projected_ids, ArmClearanceCache* cache) {
   ArmCollisionStats stats;
   if (projected_ids != nullptr) projected_ids->clear();
   const std::array<Eigen::Isometry3d, 2> motion = {
@@ -87,7 +93,12 @@ ArmCollisionStats project_out_of_arm(const Arm& arm, const ArmSkeleton& skeleton
   for (Eigen::Index i = 0; i < x1.rows(); ++i) {
     if (!fixed.empty() && fixed[static_cast<std::size_t>(i)] != 0) continue;
     Vec3 p = x1.row(i).transpose();
-    if (arm.signed_distance(skeleton1, p) >= margin) continue;  // cheap test first
+    if (cache != nullptr && cache->surely_clear(static_cast<Index>(i), p)) continue;
+    const double clearance = arm.signed_distance(skeleton1, p) - margin;  // cheap test first
+    if (clearance >= 0) {
+      if (cache != nullptr) cache->store(static_cast<Index>(i), p, clearance);
+      continue;
+    }
     bool moved = false;
     // A few passes: in the elbow crease, leaving one cone can enter the other.
     for (int pass = 0; pass < 4; ++pass) {
@@ -107,6 +118,7 @@ ArmCollisionStats project_out_of_arm(const Arm& arm, const ArmSkeleton& skeleton
       moved = true;
     }
     if (moved) {
+      if (cache != nullptr) cache->store(static_cast<Index>(i), p, 0.0);
       ++stats.projected;
       if (projected_ids != nullptr) projected_ids->push_back(static_cast<Index>(i));
       x1.row(i) = p.transpose();

@@ -6,6 +6,7 @@
 /// so the contact solver sees few cloth-arm events (Bridson et al. 2002 do the same with
 /// a level set of the body).
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -73,14 +74,46 @@ std::vector<ContactPlane> arm_contact_planes(const Arm& arm, const ArmSkeleton& 
 std::int64_t finish_arm_contacts(const std::vector<ContactPlane>& planes, const Positions& x1,
                                  std::vector<char>& released, std::vector<double>& normal_forces);
 
+/// Per cloth vertex, where its signed distance to one posed implicit arm was last evaluated
+/// and by how much it cleared the margin there. The signed distance to the arm is
+/// 1-Lipschitz (the minimum of exact distances to two convex round cones), so a vertex that
+/// has moved less than that clearance since cannot be within the margin: the repeated
+/// projections of the strain limiter's sweeps skip the query for it. Valid for one arm
+/// pose and one margin: reset() when either changes.
+class ArmClearanceCache {
+ public:
+  /// Forgets everything; `vertices` cloth vertices.
+  void reset(Index vertices);
+  /// Whether `p` (vertex `i`) is certainly at least the margin outside the arm.
+  bool surely_clear(Index i, const Vec3& p) const {
+    const auto k = static_cast<std::size_t>(i);
+    return (p - m_where[k]).squaredNorm() < m_clearance[k] * m_clearance[k];
+  }
+  /// Records that vertex `i` at `p` clears the margin by `clearance` (≥ 0), less a
+  /// nanometre so that rounding in the distance cannot make a skipped vertex one the
+  /// query would have moved (the projection decides exactly as without the cache).
+  void store(Index i, const Vec3& p, double clearance) {
+    m_where[static_cast<std::size_t>(i)] = p;
+    m_clearance[static_cast<std::size_t>(i)] = std::max(0.0, clearance - kRounding);
+  }
+  /// Metres: far above the rounding of a distance of metre-sized coordinates.
+  static constexpr double kRounding = 1e-9;
+
+ private:
+  std::vector<Vec3> m_where;
+  std::vector<double> m_clearance;  // 0: nothing known
+};
+
 /// Moves every vertex of `x1` not flagged in `fixed` (may be empty) to at least
 /// `margin` outside the implicit arm of `skeleton1`, and reduces its tangential motion
 /// relative to the arm (the rigid motion of the nearer bone from `skeleton0` to
-/// `skeleton1`) by at most `friction` times the normal correction.
+/// `skeleton1`) by at most `friction` times the normal correction. `cache` (optional, for
+/// `skeleton1` and `margin`) skips the vertices it proves clear and learns the others.
 ArmCollisionStats project_out_of_arm(const Arm& arm, const ArmSkeleton& skeleton0,
                                      const ArmSkeleton& skeleton1, const Positions& x0,
                                      Positions& x1, double margin, double friction,
                                      const std::vector<char>& fixed,
-                                     std::vector<Index>* projected_ids = nullptr);
+                                     std::vector<Index>* projected_ids = nullptr,
+                                     ArmClearanceCache* cache = nullptr);
 
 }  // namespace tailor

@@ -65,7 +65,7 @@ struct ContactPlane {
 /// Linear solver of the implicit step.
 enum class ClothSolver {
   automatic,  ///< direct up to ClothModel::kDirectSolveLimit unknowns, else iterative
-  direct,     ///< sparse supernodal Cholesky, CHOLMOD (exact)
+  direct,     ///< sparse simplicial LDLᵀ Cholesky, Eigen (exact)
   iterative,  ///< conjugate gradient, block-Jacobi preconditioner, warm-started
 };
 

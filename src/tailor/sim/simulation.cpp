@@ -123,7 +123,8 @@ struct Simulation::Impl {
   std::vector<double> normal_forces;  // arm contact normal force of the last step (N)
   StrainLimiter limiter;
   std::vector<Index> projected_ids;
-  double arm_margin = 0;  // cloth vertices are kept this far outside the implicit arm (m)
+  ArmClearanceCache arm_cache;  // per substep: the arm pose at its end
+  double arm_margin = 0;        // cloth vertices are kept this far outside the implicit arm (m)
   Positions x, v, y;
   ArmSkeleton skeleton;
   int frame = 0;
@@ -216,9 +217,10 @@ struct Simulation::Impl {
     // Strain limit and the implicit arm together (alternating projections); the
     // projection carries no friction here: friction acted in the solve.
     const auto strain_start = Clock::now();
+    arm_cache.reset(x1.rows());
     record.strain_limit = limiter.apply(x1, kStrainSweeps, [&](Positions& x_end) {
-      const ArmCollisionStats arm_stats = project_out_of_arm(arm, skeleton, skeleton1, x, x_end,
-                                                             margin, 0.0, fixed, &projected_ids);
+      const ArmCollisionStats arm_stats = project_out_of_arm(
+          arm, skeleton, skeleton1, x, x_end, margin, 0.0, fixed, &projected_ids, &arm_cache);
       for (Index i : projected_ids) released[static_cast<std::size_t>(i)] = 0;
       record.arm_projected += arm_stats.projected;
       return arm_stats.projected;

@@ -102,27 +102,38 @@ StrainLimiter::StrainLimiter(const TriangleMesh& mesh, const Positions& rest,
     if (wa + wb == 0) continue;  // both pinned: nothing can move
     m_edges.push_back({a, b});
     m_rest_length.push_back(l0);
+    m_limit_squared.push_back((1 + max_strain) * l0 * (1 + max_strain) * l0);
+    m_inverse_rest_squared.push_back(1 / (l0 * l0));
     m_weight0.push_back(wa / (wa + wb));
   }
 }
 
 double StrainLimiter::sweep(Positions& x, bool forward, std::int64_t& corrections) const {
-  double worst = 0;
+  // Squared lengths first: most edges are within the limit and need no square root.
+  double worst_squared = 0;  // largest (length / rest length)²
+  double* p = x.data();      // row-major: vertex v at p[3 v .. 3 v + 2]
   const std::size_t n = m_edges.size();
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t i = forward ? k : n - 1 - k;
     const auto [a, b] = m_edges[i];
-    const Eigen::RowVector3d d = x.row(b) - x.row(a);
-    const double l = d.norm();
-    const double limit = (1 + m_max_strain) * m_rest_length[i];
-    worst = std::max(worst, l / m_rest_length[i] - 1);
-    if (!(l > limit)) continue;
-    const Eigen::RowVector3d correction = ((l - limit) / l) * d;
-    x.row(a) += m_weight0[i] * correction;
-    x.row(b) -= (1 - m_weight0[i]) * correction;
+    double* pa = p + 3 * static_cast<std::ptrdiff_t>(a);
+    double* pb = p + 3 * static_cast<std::ptrdiff_t>(b);
+    const double dx = pb[0] - pa[0], dy = pb[1] - pa[1], dz = pb[2] - pa[2];
+    const double l2 = dx * dx + dy * dy + dz * dz;
+    worst_squared = std::max(worst_squared, l2 * m_inverse_rest_squared[i]);
+    if (!(l2 > m_limit_squared[i])) continue;
+    const double l = std::sqrt(l2);
+    const double s = (l - (1 + m_max_strain) * m_rest_length[i]) / l;
+    const double wa = m_weight0[i] * s, wb = (1 - m_weight0[i]) * s;
+    pa[0] += wa * dx;
+    pa[1] += wa * dy;
+    pa[2] += wa * dz;
+    pb[0] -= wb * dx;
+    pb[1] -= wb * dy;
+    pb[2] -= wb * dz;
     ++corrections;
   }
-  return worst;
+  return std::sqrt(worst_squared) - 1;
 }
 
 StrainLimitStats StrainLimiter::apply(Positions& x, int max_sweeps,

@@ -67,9 +67,11 @@ class StrainLimiter {
  private:
   double sweep(Positions& x, bool forward, std::int64_t& corrections) const;
 
-  std::vector<std::array<Index, 2>> m_edges;  // in sweep order
-  std::vector<double> m_rest_length;          // per m_edges entry
-  std::vector<double> m_weight0;              // share of the correction on vertex 0
+  std::vector<std::array<Index, 2>> m_edges;   // in sweep order
+  std::vector<double> m_rest_length;           // per m_edges entry
+  std::vector<double> m_limit_squared;         // ((1 + max strain) rest length)², per entry
+  std::vector<double> m_inverse_rest_squared;  // 1 / rest length², per entry
+  std::vector<double> m_weight0;               // share of the correction on vertex 0
   double m_max_strain = 0;
 };
 
