@@ -12,7 +12,7 @@ packages=(
   g++ cmake make pkg-config
   libeigen3-dev libtbb-dev libfmt-dev libspdlog-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev
-  libsuitesparse-dev libpng-dev
+  libpng-dev
   chromium  # the headless browser of tailor view's browser test (tests/view)
   pybind11-dev python3-dev python3-numpy python3-pytest
 )
