@@ -102,11 +102,6 @@ void CandidateTraversal::self(const MeshBvh& bvh, const NodeContours& contours, 
   Walk(*m_mesh, options, m_outputs).self(bvh, contours, step, 0, m_outputs.local());
 }
 
-void CandidateTraversal::pair(const MeshBvh& a, const MeshBvh& b, const TraversalOptions& options) {
-  if (a.empty() || b.empty()) return;
-  Walk(*m_mesh, options, m_outputs).pair(a, 0, b, 0, m_outputs.local());
-}
-
 std::vector<std::span<const TrianglePair>> CandidateTraversal::blocks() const {
   std::vector<std::span<const TrianglePair>> result;
   for (const ThreadOutput& out : m_outputs) {

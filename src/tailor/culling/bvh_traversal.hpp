@@ -42,10 +42,10 @@ struct StepPositions {
   const Positions& x1;
 };
 
-/// Collects the candidate triangle pairs (CTPs) of a step from any number of self- and
-/// pair-traversals. The pairs stay in per-thread lists of fixed-size blocks that keep
-/// their memory from step to step (no allocation once warm, no copy on growth, at most
-/// one partly filled block per thread) and are read block by block.
+/// Collects the candidate triangle pairs (CTPs) of a step from BVH self-traversals. The pairs stay
+/// in per-thread lists of fixed-size blocks that keep their memory from step to step (no allocation
+/// once warm, no copy on growth, at most one partly filled block per thread) and are read block by
+/// block.
 class CandidateTraversal {
  public:
   explicit CandidateTraversal(const TriangleMesh& mesh) : m_mesh(&mesh) {}
@@ -59,8 +59,6 @@ class CandidateTraversal {
   /// pairs and the counts do not depend on the thread count, their order does.
   void self(const MeshBvh& bvh, const NodeContours& contours, StepPositions step,
             const TraversalOptions& options);
-  /// Adds every CTP between two BVHs over disjoint face sets.
-  void pair(const MeshBvh& a, const MeshBvh& b, const TraversalOptions& options);
 
   /// Removes every pair found since clear() for which `culled(pair)` holds (a later stage
   /// of high-level culling, e.g. radial view); returns how many. Call it after the

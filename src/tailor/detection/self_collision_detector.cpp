@@ -42,8 +42,8 @@ struct SelfCollisionDetector::Impl {
   DetectionConfig config;
   tbb::task_arena arena;
   // One BVH over the whole mesh; radial view culls the pairs its traversal produces.
-  std::vector<MeshBvh> bvhs;
-  std::vector<NodeContours> contours;
+  MeshBvh bvh;
+  NodeContours contours;
   RadialViewCulling radial;
   bool use_radial_view = false;
   IsolatedSet isolated;
@@ -62,11 +62,8 @@ struct SelfCollisionDetector::Impl {
     use_radial_view = config.radial_view && !section_loops.empty();
     arena.execute([&] {
       if (use_radial_view) radial = RadialViewCulling(mesh, x_build, std::move(section_loops));
-      bvhs.emplace_back(mesh, x_build);
-      contours.resize(bvhs.size());
-      if (config.normal_cones && config.contour_test) {
-        for (std::size_t c = 0; c < bvhs.size(); ++c) contours[c] = NodeContours(mesh, bvhs[c]);
-      }
+      bvh = MeshBvh(mesh, x_build);
+      if (config.normal_cones && config.contour_test) contours = NodeContours(mesh, bvh);
       if (config.adjacency_culling) isolated = IsolatedSet::build(mesh);
       generator = PrimitivePairGenerator(mesh);
     });
@@ -76,10 +73,7 @@ struct SelfCollisionDetector::Impl {
     traversal.clear();
     const TraversalOptions options{config.normal_cones, config.contour_test,
                                    config.adjacency_culling};
-    for (std::size_t c = 0; c < bvhs.size(); ++c) {
-      traversal.self(bvhs[c], contours[c], {x0, x1}, options);
-      for (std::size_t d = c + 1; d < bvhs.size(); ++d) traversal.pair(bvhs[c], bvhs[d], options);
-    }
+    traversal.self(bvh, contours, {x0, x1}, options);
     if (use_radial_view) {
       // Clean faces matter only where candidates may share a vertex (radial_view_culling.hpp).
       const RadialViewCounts counts = radial.classify(x0, x1, !config.adjacency_culling);
@@ -156,7 +150,7 @@ struct SelfCollisionDetector::Impl {
     DetectionStats& stats = result.stats;
     arena.execute([&] {
       const auto start = Clock::now();
-      for (MeshBvh& bvh : bvhs) bvh.refit(x0, x1, config.normal_cones);
+      bvh.refit(x0, x1, config.normal_cones);
       stats.refit_ms = elapsed_ms(start);
 
       const auto stage = Clock::now();
