@@ -49,19 +49,25 @@ void set_counters(benchmark::State& state, const DetectionStats& s, int faces) {
   state.counters["collisions"] = static_cast<double>(s.vf_colliding + s.ee_colliding);
 }
 
-// Whole detection step; args: grid cells per side, threads, crumple time x100.
-void BM_DetectStep(benchmark::State& state) {
-  const Scene& s = scene(static_cast<int>(state.range(0)), state.range(2) / 100.0);
+// The paper preset's detection of the step of `s` on `threads` threads, timed.
+void detect_step(benchmark::State& state, const Scene& s, int threads) {
   DetectionConfig config = DetectionConfig::preset("paper");
-  config.threads = static_cast<int>(state.range(1));
+  config.threads = threads;
   SelfCollisionDetector detector(*s.mesh, s.x0, config);
   DetectionStats last;
   for (auto _ : state) {
     DetectionResult result = detector.detect(s.x0, s.x1);
     benchmark::DoNotOptimize(result.collisions.vertex_face.data());
+    benchmark::DoNotOptimize(result.collisions.edge_edge.data());
     last = result.stats;
   }
   set_counters(state, last, s.mesh->num_faces());
+}
+
+// Whole detection step; args: grid cells per side, threads, crumple time x100.
+void BM_DetectStep(benchmark::State& state) {
+  detect_step(state, scene(static_cast<int>(state.range(0)), state.range(2) / 100.0),
+              static_cast<int>(state.range(1)));
 }
 
 // The folded cloth on a sphere of about `triangles` triangles (cached).
@@ -80,17 +86,7 @@ const Scene& folded_scene(std::int64_t triangles) {
 
 // The contact-heavy step; args: triangles, threads.
 void BM_DetectFoldedStep(benchmark::State& state) {
-  const Scene& s = folded_scene(state.range(0));
-  DetectionConfig config = DetectionConfig::preset("paper");
-  config.threads = static_cast<int>(state.range(1));
-  SelfCollisionDetector detector(*s.mesh, s.x0, config);
-  DetectionStats last;
-  for (auto _ : state) {
-    DetectionResult result = detector.detect(s.x0, s.x1);
-    benchmark::DoNotOptimize(result.collisions.edge_edge.data());
-    last = result.stats;
-  }
-  set_counters(state, last, s.mesh->num_faces());
+  detect_step(state, folded_scene(state.range(0)), static_cast<int>(state.range(1)));
 }
 
 // Refitting swept boxes and cones only.

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// Runs the built `tailor` executable from tests in the background (to signal it); runs to
-/// completion are io/io_test_support.hpp's run_cli().
+/// completion are support/run_cli.hpp's run_cli().
 
 #include <fcntl.h>
 #include <signal.h>

@@ -11,7 +11,7 @@
 
 namespace tailor::test {
 
-/// What a CLI run gave (run_cli() and quoted() are in io/io_test_support.hpp).
+/// What a CLI run gave (run_cli() and quoted() are in support/run_cli.hpp).
 using RunResult = CliResult;
 
 /// A file from the reference data (../shared/data).

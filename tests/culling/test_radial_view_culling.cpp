@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <set>
 
+#include "culling/radial_view_checks.hpp"
 #include "culling/radial_view_tubes.hpp"
 #include "support/sanitized.hpp"
 #include "tailor/culling/radial_view_culling.hpp"
@@ -16,43 +17,11 @@
 namespace tailor {
 namespace {
 
+using testing::culled_colliding_pairs;
+using testing::expect_same_collisions;
 using testing::random_folding_tube;
 using testing::sanitized;
 using testing::TubeStep;
-
-// Every pair of distinct faces (f on the first feature, g on the second) around each
-// collision: none of them may be culled, whichever face the feature assignment picks.
-std::int64_t culled_colliding_pairs(const TriangleMesh& mesh, const CollisionSet& truth,
-                                    const RadialViewCulling& radial) {
-  std::int64_t wrong = 0;
-  const auto check = [&](std::span<const Index> a, std::span<const Index> b) {
-    for (Index f : a) {
-      for (Index g : b) wrong += f != g && radial.pair_culled(f, g);
-    }
-  };
-  for (const VertexFaceCollision& c : truth.vertex_face) {
-    const Index face[] = {c.face};
-    check(mesh.vertex_faces(c.vertex), face);
-  }
-  for (const EdgeEdgeCollision& c : truth.edge_edge) {
-    check(mesh.edge_faces(c.edge_a), mesh.edge_faces(c.edge_b));
-  }
-  return wrong;
-}
-
-void expect_same_collisions(const CollisionSet& result, const CollisionSet& truth,
-                            const std::string& what) {
-  ASSERT_EQ(result.vertex_face.size(), truth.vertex_face.size()) << what;
-  ASSERT_EQ(result.edge_edge.size(), truth.edge_edge.size()) << what;
-  for (std::size_t i = 0; i < truth.vertex_face.size(); ++i) {
-    EXPECT_EQ(result.vertex_face[i].vertex, truth.vertex_face[i].vertex) << what;
-    EXPECT_EQ(result.vertex_face[i].face, truth.vertex_face[i].face) << what;
-  }
-  for (std::size_t i = 0; i < truth.edge_edge.size(); ++i) {
-    EXPECT_EQ(result.edge_edge[i].edge_a, truth.edge_edge[i].edge_a) << what;
-    EXPECT_EQ(result.edge_edge[i].edge_b, truth.edge_edge[i].edge_b) << what;
-  }
-}
 
 // Fig. 1's "+ radial view" stage: normal cones and radial view, no isolated set.
 DetectionConfig cones_and_radial_view() {

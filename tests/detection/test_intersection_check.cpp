@@ -1,6 +1,7 @@
 /// @file
 /// The static intersection checker: hand-made meshes, BVH-accelerated vs brute force, CLI.
 
+#include "support/run_cli.hpp"
 #include "support/sanitized.hpp"
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 #include <fstream>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "tailor/detection/intersection_check.hpp"
 #include "tailor/geometry/error.hpp"
@@ -190,11 +192,14 @@ void write_obj_file(const std::filesystem::path& p, const Positions& x, const Fa
     out << "f " << f(i, 0) + 1 << ' ' << f(i, 1) + 1 << ' ' << f(i, 2) + 1 << '\n';
 }
 
-int run_cli(const std::string& args) {
-  const std::string cmd =
-      std::string(TAILOR_CLI_PATH) + " check-intersections " + args + " > /dev/null 2>&1";
-  const int status = std::system(cmd.c_str());
-  return WEXITSTATUS(status);
+/// Exit code of `tailor check-intersections FILES...`.
+int run_check_intersections_cli(const std::vector<std::filesystem::path>& files) {
+  std::string arguments = "check-intersections";
+  for (const auto& file : files) {
+    arguments += ' ';
+    arguments += testing::quoted(file);
+  }
+  return testing::run_cli(arguments).exit_code;
 }
 
 TEST(IntersectionCheckCli, ExitCodes) {
@@ -209,11 +214,11 @@ TEST(IntersectionCheckCli, ExitCodes) {
     std::ofstream bad(dir / "bad.obj");
     bad << "v 0 0 0\nf 1 2 3\n";
   }
-  EXPECT_EQ(run_cli((dir / "clean.obj").string()), 0);
-  EXPECT_EQ(run_cli((dir / "crossed.obj").string()), 1);
-  EXPECT_EQ(run_cli((dir / "clean.obj").string() + " " + (dir / "crossed.obj").string()), 1);
-  EXPECT_EQ(run_cli((dir / "bad.obj").string()), 2);
-  EXPECT_EQ(run_cli((dir / "missing.obj").string()), 2);
+  EXPECT_EQ(run_check_intersections_cli({dir / "clean.obj"}), 0);
+  EXPECT_EQ(run_check_intersections_cli({dir / "crossed.obj"}), 1);
+  EXPECT_EQ(run_check_intersections_cli({dir / "clean.obj", dir / "crossed.obj"}), 1);
+  EXPECT_EQ(run_check_intersections_cli({dir / "bad.obj"}), 2);
+  EXPECT_EQ(run_check_intersections_cli({dir / "missing.obj"}), 2);
   std::filesystem::remove_all(dir);
 }
 #endif

@@ -3,17 +3,18 @@
 /// Helpers shared by the io tests: a per-test temporary folder and message checks.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "tailor/geometry/error.hpp"
+#include "tailor/io/mesh_io.hpp"
+#include "support/run_cli.hpp"
 #include "support/scoped_memory_budget.hpp"
 
 namespace tailor::test {
@@ -89,34 +90,25 @@ inline void make_sparse_file(const std::filesystem::path& path, std::uintmax_t s
   std::filesystem::resize_file(path, size);
 }
 
+/// The file names (without folders) of `paths`, in order.
+inline std::vector<std::string> file_names(const std::vector<std::filesystem::path>& paths) {
+  std::vector<std::string> names;
+  for (const auto& p : paths) names.push_back(p.filename().string());
+  return names;
+}
+
+/// Writes a mesh of one triangle to `path` (format from its extension).
+inline void write_triangle(const std::filesystem::path& path) {
+  Positions x(3, 3);
+  x << 0, 0, 0, 1, 0, 0, 0, 1, 0;
+  FaceArray f(1, 3);
+  f << 0, 1, 2;
+  write_mesh(path, x, f);
+}
+
 /// Exit code and combined output of one run of the built `tailor` CLI.
-struct CliResult {
-  int exit_code = -1;  ///< -1 when the process did not exit normally (e.g. a crash)
-  std::string output;  ///< stdout and stderr
-};
-
-/// Runs `tailor ARGUMENTS` through the shell (arguments are shell words; quote paths with
-/// quoted()). `shell_prefix` runs first in the same shell (e.g. `ulimit -v N;`).
-inline CliResult run_cli(const std::string& arguments, const std::string& shell_prefix = "") {
-  const std::string command =
-      shell_prefix + " '" + std::string(TAILOR_CLI_PATH) + "' " + arguments + " 2>&1";
-  CliResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.output.append(buffer, n);
-  const int status = pclose(pipe);
-  if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
-  return result;
-}
-
-/// Single-quotes a path for the shell (appends piecewise: GCC 12 warns on "'" + string&&).
-inline std::string quoted(const std::filesystem::path& path) {
-  std::string text = "'";
-  text += path.string();
-  text += '\'';
-  return text;
-}
+using CliResult = ::tailor::testing::CliRun;
+using ::tailor::testing::quoted;
+using ::tailor::testing::run_cli;
 
 }  // namespace tailor::test

@@ -11,23 +11,7 @@
 namespace tailor {
 namespace {
 
-using test::expect_contains;
-using test::input_error_message;
-using test::TempDir;
-
-std::vector<std::string> names(const std::vector<std::filesystem::path>& paths) {
-  std::vector<std::string> out;
-  for (const auto& p : paths) out.push_back(p.filename().string());
-  return out;
-}
-
-void write_triangle(const std::filesystem::path& path) {
-  Positions x(3, 3);
-  x << 0, 0, 0, 1, 0, 0, 0, 1, 0;
-  FaceArray f(1, 3);
-  f << 0, 1, 2;
-  write_mesh(path, x, f);
-}
+using namespace test;  // io_test_support.hpp
 
 TEST(FrameFiles, NaturalOrder) {
   std::vector<std::filesystem::path> paths = {"d/frame_10.obj",
@@ -38,9 +22,10 @@ TEST(FrameFiles, NaturalOrder) {
                                               "d/frame_100.obj",
                                               "d/frame_99999999999999999999999.obj"};
   sort_frame_files(paths);
-  EXPECT_EQ(names(paths), (std::vector<std::string>{
-                              "frame_1.obj", "frame_02.obj", "frame_2.obj", "frame_10.obj",
-                              "frame_100.obj", "frame_99999999999999999999999.obj", "plain.obj"}));
+  EXPECT_EQ(file_names(paths),
+            (std::vector<std::string>{"frame_1.obj", "frame_02.obj", "frame_2.obj", "frame_10.obj",
+                                      "frame_100.obj", "frame_99999999999999999999999.obj",
+                                      "plain.obj"}));
 }
 
 TEST(FrameFiles, NumbersAndNamePatterns) {
@@ -60,9 +45,11 @@ TEST(FrameFiles, GroupsKeepTheGivenOrder) {
   const std::vector<FrameFileGroup> groups = group_frame_files(paths);
   ASSERT_EQ(groups.size(), 3u);
   EXPECT_EQ(groups[0].name_pattern, "arm_*.obj");
-  EXPECT_EQ(names(groups[0].paths), (std::vector<std::string>{"arm_0000.obj", "arm_0001.obj"}));
+  EXPECT_EQ(file_names(groups[0].paths),
+            (std::vector<std::string>{"arm_0000.obj", "arm_0001.obj"}));
   EXPECT_EQ(groups[1].name_pattern, "cloth_*.obj");
-  EXPECT_EQ(names(groups[1].paths), (std::vector<std::string>{"cloth_0000.obj", "cloth_0001.obj"}));
+  EXPECT_EQ(file_names(groups[1].paths),
+            (std::vector<std::string>{"cloth_0000.obj", "cloth_0001.obj"}));
   EXPECT_EQ(groups[2].name_pattern, "a.ply");
 }
 
@@ -77,10 +64,10 @@ TEST(FrameFiles, GlobExpandsInNaturalOrderAndKeepsMeshesOnly) {
   EXPECT_TRUE(has_glob_wildcard("out/cloth_?.obj"));
   EXPECT_FALSE(has_glob_wildcard("out/cloth_%04d.obj"));
   const std::string pattern = (dir / "frame_*").string();
-  EXPECT_EQ(names(expand_frame_glob(pattern)),
+  EXPECT_EQ(file_names(expand_frame_glob(pattern)),
             (std::vector<std::string>{"frame_1.obj", "frame_2.obj", "frame_10.obj"}));
-  EXPECT_EQ(names(list_frame_files(pattern)), names(expand_frame_glob(pattern)));
-  EXPECT_EQ(names(expand_frame_glob((dir / "frame_?.obj").string())),
+  EXPECT_EQ(file_names(list_frame_files(pattern)), file_names(expand_frame_glob(pattern)));
+  EXPECT_EQ(file_names(expand_frame_glob((dir / "frame_?.obj").string())),
             (std::vector<std::string>{"frame_1.obj", "frame_2.obj"}));
   expect_contains(input_error_message([&] { expand_frame_glob((dir / "none_*.obj").string()); }),
                   {"no .obj or .ply files match", "none_*.obj"});

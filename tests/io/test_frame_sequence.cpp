@@ -11,9 +11,7 @@
 namespace tailor {
 namespace {
 
-using test::expect_contains;
-using test::input_error_message;
-using test::TempDir;
+using namespace test;  // io_test_support.hpp
 
 MeshData frame(double shift, Index extra_vertices = 0, bool flip = false) {
   MeshData m;
@@ -29,12 +27,6 @@ void write_frame(const std::filesystem::path& path, const MeshData& m) {
   write_mesh(path, m.vertices, m.faces);
 }
 
-std::vector<std::string> names(const std::vector<std::filesystem::path>& paths) {
-  std::vector<std::string> out;
-  for (const auto& p : paths) out.push_back(p.filename().string());
-  return out;
-}
-
 TEST(FrameSequence, FolderIsSortedByNumberThenName) {
   TempDir dir;
   for (const char* name : {"frame10.obj", "frame2.ply", "frame1.obj", "frame02.obj", "b.obj",
@@ -43,7 +35,7 @@ TEST(FrameSequence, FolderIsSortedByNumberThenName) {
   }
   test::write_bytes(dir / "notes.txt", "not a mesh");
   std::filesystem::create_directories(dir / "sub.obj");
-  EXPECT_EQ(names(list_frame_files(dir.path())),
+  EXPECT_EQ(file_names(list_frame_files(dir.path())),
             (std::vector<std::string>{"frame1.obj", "frame02.obj", "frame2.ply", "frame_0003.obj",
                                       "frame10.obj", "a.PLY", "b.obj"}));
 }
@@ -52,7 +44,7 @@ TEST(FrameSequence, PatternsStartAtZeroOrOne) {
   TempDir dir;
   for (int i = 0; i < 3; ++i) write_frame(dir / fmt::format("{}.ply", i), frame(i));
   write_frame(dir / "4.ply", frame(4));  // after a gap: not part of the sequence
-  EXPECT_EQ(names(list_frame_files((dir / "%d.ply").string())),
+  EXPECT_EQ(file_names(list_frame_files((dir / "%d.ply").string())),
             (std::vector<std::string>{"0.ply", "1.ply", "2.ply"}));
   for (int i = 1; i <= 12; ++i) write_frame(dir / fmt::format("cloth_{:04d}.obj", i), frame(i));
   const auto padded = list_frame_files((dir / "cloth_%04d.obj").string());

@@ -12,23 +12,7 @@
 namespace tailor {
 namespace {
 
-using test::expect_contains;
-using test::input_error_message;
-using test::TempDir;
-
-std::vector<std::string> names(const std::vector<std::filesystem::path>& paths) {
-  std::vector<std::string> out;
-  for (const auto& p : paths) out.push_back(p.filename().string());
-  return out;
-}
-
-void write_triangle(const std::filesystem::path& path) {
-  Positions x(3, 3);
-  x << 0, 0, 0, 1, 0, 0, 0, 1, 0;
-  FaceArray f(1, 3);
-  f << 0, 1, 2;
-  write_mesh(path, x, f);
-}
+using namespace test;  // io_test_support.hpp
 
 TEST(FrameSources, OneSequenceFromAFolderAGlobOrFiles) {
   TempDir dir;
@@ -41,13 +25,13 @@ TEST(FrameSources, OneSequenceFromAFolderAGlobOrFiles) {
         std::vector<std::string>{(dir / "frame_1.obj").string(), (dir / "frame_10.obj").string(),
                                  (dir / "frame_2.obj").string()}}) {
     const FrameSources sources = resolve_frame_sources(arguments);
-    EXPECT_EQ(names(sources.frames), expected) << arguments.front();
+    EXPECT_EQ(file_names(sources.frames), expected) << arguments.front();
     EXPECT_EQ(sources.frames_pattern, "frame_*.obj");
     EXPECT_TRUE(sources.obstacle.empty());
     EXPECT_FALSE(sources.obstacle_from_layout);
   }
   const FrameSources single = resolve_frame_sources({(dir / "frame_2.obj").string()});
-  EXPECT_EQ(names(single.frames), (std::vector<std::string>{"frame_2.obj"}));
+  EXPECT_EQ(file_names(single.frames), (std::vector<std::string>{"frame_2.obj"}));
 }
 
 TEST(FrameSources, SimulatorLayoutTakesTheArmAsObstacle) {
@@ -58,9 +42,9 @@ TEST(FrameSources, SimulatorLayoutTakesTheArmAsObstacle) {
   }
   test::write_bytes(dir / "steps.jsonl", "{}\n");
   const FrameSources sources = resolve_frame_sources({dir.path().string()});
-  EXPECT_EQ(names(sources.frames),
+  EXPECT_EQ(file_names(sources.frames),
             (std::vector<std::string>{"cloth_0000.obj", "cloth_0001.obj", "cloth_0002.obj"}));
-  EXPECT_EQ(names(sources.obstacle),
+  EXPECT_EQ(file_names(sources.obstacle),
             (std::vector<std::string>{"arm_0000.obj", "arm_0001.obj", "arm_0002.obj"}));
   EXPECT_EQ(sources.obstacle_pattern, "arm_*.obj");
   EXPECT_TRUE(sources.obstacle_from_layout);
@@ -70,7 +54,7 @@ TEST(FrameSources, SimulatorLayoutTakesTheArmAsObstacle) {
   write_triangle(dir / "elsewhere" / "floor.obj");
   const FrameSources named =
       resolve_frame_sources({dir.path().string()}, (dir / "elsewhere" / "floor.obj").string());
-  EXPECT_EQ(names(named.obstacle), (std::vector<std::string>{"floor.obj"}));
+  EXPECT_EQ(file_names(named.obstacle), (std::vector<std::string>{"floor.obj"}));
   EXPECT_FALSE(named.obstacle_from_layout);
   const FrameSources arm_only = resolve_frame_sources({(dir / "arm_*.obj").string()});
   EXPECT_EQ(arm_only.frames.size(), 3u);

@@ -3,11 +3,9 @@
 /// counts against the pinhole projection), candidate faces in red, contact sheets, and
 /// the `tailor render` command on a real simulation folder.
 
+#include "support/run_cli.hpp"
 #include "support/sanitized.hpp"
 #include <gtest/gtest.h>
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 
 #include <cmath>
 #include <filesystem>
@@ -19,8 +17,6 @@
 #include "tailor/geometry/error.hpp"
 #include "tailor/render/run_renderer.hpp"
 #include "tailor/sim/frame_writer.hpp"
-
-extern char** environ;
 
 namespace tailor {
 namespace {
@@ -171,23 +167,9 @@ TEST(ContactSheet, ShowsEvenlySpacedFramesWithFirstAndLast) {
   EXPECT_GT(composed.count({10, 20, 30}), 40 * 30);  // the thumbnail, minus its label
 }
 
+/// Runs the CLI, its output discarded; returns its exit code.
 int run_cli(const std::vector<std::string>& args) {
-  std::vector<std::string> all{TAILOR_CLI_PATH};
-  all.insert(all.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : all) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
-  const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) return -1;
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return testing::run_cli_quietly(args, 0, testing::Stderr::kDiscard);
 }
 
 TEST(RenderCommand, RendersASimulationFolder) {

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "culling/radial_view_checks.hpp"
+#include "sim/small_scene.hpp"
 #include "support/sanitized.hpp"
 #include "tailor/culling/radial_view_culling.hpp"
 #include "tailor/detection/brute_force.hpp"
@@ -14,57 +16,17 @@
 namespace tailor {
 namespace {
 
+using tailor::testing::culled_colliding_pairs;
+using tailor::testing::expect_same_collisions;
 using tailor::testing::sanitized;
 
 /// A small, fast version of the default scene (the gesture played twice as fast), one
 /// substep per frame so that every substep can be checked.
 SceneConfig small_scene(const std::string& gesture) {
-  SceneConfig c;
-  c.sleeve.rings = 13;
-  c.sleeve.segments = 20;
-  c.gesture.name = gesture;
-  c.gesture.settle_time = 0.1;
-  c.gesture.speed = 2.0;
+  SceneConfig c = testing::small_fast_scene(gesture);
   c.time_step = c.time_step / c.substeps;
   c.substeps = 1;
   return c;
-}
-
-bool same_collisions(const CollisionSet& a, const CollisionSet& b) {
-  if (a.vertex_face.size() != b.vertex_face.size() || a.edge_edge.size() != b.edge_edge.size()) {
-    return false;
-  }
-  for (std::size_t i = 0; i < a.vertex_face.size(); ++i) {
-    if (a.vertex_face[i].vertex != b.vertex_face[i].vertex ||
-        a.vertex_face[i].face != b.vertex_face[i].face) {
-      return false;
-    }
-  }
-  for (std::size_t i = 0; i < a.edge_edge.size(); ++i) {
-    if (a.edge_edge[i].edge_a != b.edge_edge[i].edge_a ||
-        a.edge_edge[i].edge_b != b.edge_edge[i].edge_b) {
-      return false;
-    }
-  }
-  return true;
-}
-
-std::int64_t culled_colliding_pairs(const TriangleMesh& mesh, const CollisionSet& truth,
-                                    const RadialViewCulling& radial) {
-  std::int64_t wrong = 0;
-  const auto check = [&](std::span<const Index> a, std::span<const Index> b) {
-    for (Index f : a) {
-      for (Index g : b) wrong += f != g && radial.pair_culled(f, g);
-    }
-  };
-  for (const VertexFaceCollision& c : truth.vertex_face) {
-    const Index face[] = {c.face};
-    check(mesh.vertex_faces(c.vertex), face);
-  }
-  for (const EdgeEdgeCollision& c : truth.edge_edge) {
-    check(mesh.edge_faces(c.edge_a), mesh.edge_faces(c.edge_b));
-  }
-  return wrong;
 }
 
 // Plays the gesture and checks every substep: the step the cloth took, and the same
@@ -99,8 +61,8 @@ void check_gesture(const std::string& gesture) {
         const Positions target = x0 + stretch * (x1 - x0);
         const CollisionSet truth = brute_force_self_collisions(mesh, x0, target);
         collisions += static_cast<std::int64_t>(truth.size());
-        EXPECT_TRUE(same_collisions(paper.detect(x0, target).collisions, truth));
-        EXPECT_TRUE(same_collisions(radial_stage.detect(x0, target).collisions, truth));
+        expect_same_collisions(paper.detect(x0, target).collisions, truth, "paper");
+        expect_same_collisions(radial_stage.detect(x0, target).collisions, truth, "radial stage");
         radial.classify(x0, target);
         EXPECT_EQ(culled_colliding_pairs(mesh, truth, radial), 0);
         std::vector<TrianglePair> pairs = without.detect(x0, target).candidate_triangle_pairs;

@@ -2,44 +2,33 @@
 /// The arm-sleeve simulation: short runs of every gesture at low resolution, and the
 /// `tailor simulate` command's files (including Ctrl-C).
 
+#include "sim/small_scene.hpp"
+#include "support/run_cli.hpp"
 #include "support/sanitized.hpp"
 #include <gtest/gtest.h>
-#include <signal.h>
-#include <spawn.h>
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <thread>
 
 #include "tailor/scene/scene.hpp"
 #include "tailor/sim/frame_writer.hpp"
 #include "tailor/sim/simulation.hpp"
-
-extern char** environ;
 
 namespace tailor {
 namespace {
 
 namespace fs = std::filesystem;
 
+using tailor::testing::run_cli_quietly;
 using tailor::testing::sanitized;
 
 /// A small, fast version of the default scene: the gesture played twice as fast, with
 /// twice the substeps, so the arm moves as far per substep as in the default scene.
 SceneConfig small_scene(const std::string& gesture) {
-  SceneConfig c;
-  c.sleeve.rings = 13;
-  c.sleeve.segments = 20;
-  c.gesture.name = gesture;
-  c.gesture.settle_time = 0.1;
-  c.gesture.speed = 2.0;
+  SceneConfig c = testing::small_fast_scene(gesture);
   c.substeps = 2 * SceneConfig{}.substeps;
   return c;
 }
@@ -150,30 +139,6 @@ TEST(Simulation, SummaryHasTheRequiredFields) {
   EXPECT_EQ(s["steps"], 2 * SceneConfig{}.substeps);
 }
 
-/// Runs the CLI with `args`; returns its exit status. If `interrupt_after` > 0, sends
-/// SIGINT after that many seconds.
-int run_cli(const std::vector<std::string>& args, double interrupt_after = 0) {
-  std::vector<std::string> all{TAILOR_CLI_PATH};
-  all.insert(all.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : all) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) return -1;
-  if (interrupt_after > 0) {
-    std::this_thread::sleep_for(std::chrono::duration<double>(interrupt_after));
-    kill(pid, SIGINT);
-  }
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-
 nlohmann::json read_json(const fs::path& p) {
   std::ifstream in(p);
   return nlohmann::json::parse(in);
@@ -188,9 +153,10 @@ TEST(SimulateCommand, WritesFramesStepsAndSummary) {
   small.sleeve.segments = 12;
   const std::size_t observers = Scene(small).observer_loops().size();
   ASSERT_GE(observers, 1u);
-  ASSERT_EQ(run_cli({"simulate", "--frames", std::to_string(frames), "--rings", "9", "--segments",
-                     "12", "--out", out.string(), "--check-intersections", "--threads", "1"}),
-            0);
+  ASSERT_EQ(
+      run_cli_quietly({"simulate", "--frames", std::to_string(frames), "--rings", "9", "--segments",
+                       "12", "--out", out.string(), "--check-intersections", "--threads", "1"}),
+      0);
   for (int f = 0; f <= frames; ++f) {
     EXPECT_TRUE(fs::exists(out / frame_file_name("cloth", f))) << f;
     EXPECT_TRUE(fs::exists(out / frame_file_name("arm", f))) << f;
@@ -250,8 +216,8 @@ TEST(SimulateCommand, WritesFramesStepsAndSummary) {
 TEST(SimulateCommand, NoContactsWritesNoContactFilesAndRenderWritesFramePictures) {
   const fs::path out = fs::temp_directory_path() / "tailor_test_simulate_nocontacts";
   fs::remove_all(out);
-  ASSERT_EQ(run_cli({"simulate", "--frames", "2", "--rings", "9", "--segments", "12", "--out",
-                     out.string(), "--no-contacts", "--render", "--threads", "1"}),
+  ASSERT_EQ(run_cli_quietly({"simulate", "--frames", "2", "--rings", "9", "--segments", "12",
+                             "--out", out.string(), "--no-contacts", "--render", "--threads", "1"}),
             0);
   EXPECT_FALSE(fs::exists(out / frame_file_name("contacts", 1, ".json")));
   EXPECT_FALSE(fs::exists(out / "clusters.json"));
@@ -266,7 +232,7 @@ TEST(SimulateCommand, StaticCheckOnlyWhenAsked) {
                                   "9",          "--segments",    "12",        "--out",
                                   out.string(), "--no-contacts", "--threads", "1"};
     args.insert(args.end(), extra.begin(), extra.end());
-    EXPECT_EQ(run_cli(args), 0);
+    EXPECT_EQ(run_cli_quietly(args), 0);
     return read_json(out / "summary.json")["checked_steps"].get<int>();
   };
   EXPECT_EQ(checked_steps({}), 0);
@@ -275,19 +241,19 @@ TEST(SimulateCommand, StaticCheckOnlyWhenAsked) {
 }
 
 TEST(SimulateCommand, RejectsBadInputWithExitCode2) {
-  EXPECT_EQ(run_cli({"simulate", "--method", "fastest", "--frames", "1"}), 2);
-  EXPECT_EQ(run_cli({"simulate", "--gesture", "wave", "--frames", "1"}), 2);
-  EXPECT_EQ(run_cli({"simulate", "--scene", "/nonexistent/scene.json"}), 2);
+  EXPECT_EQ(run_cli_quietly({"simulate", "--method", "fastest", "--frames", "1"}), 2);
+  EXPECT_EQ(run_cli_quietly({"simulate", "--gesture", "wave", "--frames", "1"}), 2);
+  EXPECT_EQ(run_cli_quietly({"simulate", "--scene", "/nonexistent/scene.json"}), 2);
   // Too coarse for its faces to clear the arm (see Simulation): rejected, not run.
-  EXPECT_EQ(run_cli({"simulate", "--frames", "1", "--rings", "4", "--segments", "6"}), 2);
+  EXPECT_EQ(run_cli_quietly({"simulate", "--frames", "1", "--rings", "4", "--segments", "6"}), 2);
 }
 
 TEST(SimulateCommand, CtrlCStopsAfterTheFrameWithAValidSummary) {
   const fs::path out = fs::temp_directory_path() / "tailor_test_simulate_sigint";
   fs::remove_all(out);
-  const int status = run_cli({"simulate", "--frames", "100000", "--rings", "13", "--segments", "20",
-                              "--out", out.string(), "--threads", "1"},
-                             sanitized() ? 4.0 : 1.5);
+  const int status = run_cli_quietly({"simulate", "--frames", "100000", "--rings", "13",
+                                      "--segments", "20", "--out", out.string(), "--threads", "1"},
+                                     sanitized() ? 4.0 : 1.5);
   EXPECT_EQ(status, 130);
   ASSERT_TRUE(fs::exists(out / "summary.json"));
   const auto s = read_json(out / "summary.json");

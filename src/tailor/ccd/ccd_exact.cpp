@@ -7,13 +7,13 @@
 
 #include <array>
 #include <bit>
-#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
 
 #include "tailor/ccd/big_int.hpp"
 #include "tailor/ccd/exact_contact.hpp"
+#include "tailor/geometry/common_scale_integers.hpp"
 #include "tailor/geometry/fixed_int.hpp"
 
 namespace tailor::detail {
@@ -40,26 +40,7 @@ void check_finite(const Points& x) {
 /// constant: signs and roots do not change).
 template <class Z>
 std::array<PolyVec<Z>, 3> relative_polys(const Points& x) {
-  std::uint64_t mantissa[8][3];
-  int exponent[8][3];
-  int lowest = INT_MAX;
-  for (int i = 0; i < 8; ++i) {
-    for (int k = 0; k < 3; ++k) {
-      const double v = (*x[i])[k];
-      mantissa[i][k] = 0;
-      exponent[i][k] = 0;
-      if (v == 0.0) continue;
-      decompose_double(v, mantissa[i][k], exponent[i][k]);
-      lowest = std::min(lowest, exponent[i][k]);
-    }
-  }
-  Z value[8][3];
-  for (int i = 0; i < 8; ++i) {
-    for (int k = 0; k < 3; ++k) {
-      if (mantissa[i][k] == 0) continue;
-      value[i][k] = Z::scaled(mantissa[i][k], exponent[i][k] - lowest, (*x[i])[k] < 0.0);
-    }
-  }
+  const auto value = common_scale_integers<Z>(x);
   std::array<PolyVec<Z>, 3> out;
   for (int i = 1; i <= 3; ++i) {
     Poly<Z>* comp[3] = {&out[i - 1].x, &out[i - 1].y, &out[i - 1].z};

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "tailor/bvh/feature_boxes.hpp"
 #include "tailor/ccd/ccd.hpp"
 #include "tailor/geometry/error.hpp"
 
@@ -32,15 +33,22 @@ struct SweptBoxes {
       vertices[v].extend(row(x0, v));
       vertices[v].extend(row(x1, v));
     }
-    for (Index e = 0; e < mesh.num_edges(); ++e) {
-      edges[e].extend(vertices[mesh.edges()(e, 0)]);
-      edges[e].extend(vertices[mesh.edges()(e, 1)]);
-    }
-    for (Index f = 0; f < mesh.num_faces(); ++f) {
-      for (int k = 0; k < 3; ++k) faces[f].extend(vertices[mesh.faces()(f, k)]);
-    }
+    bound_edges_and_faces(mesh, vertices, edges, faces);
   }
 };
+
+/// Builds the three BVHs on `boxes` when `rebuild` (another mesh), else refits them.
+void build_or_refit(bool rebuild, const SweptBoxes& boxes, Bvh& vertices, Bvh& edges, Bvh& faces) {
+  if (rebuild) {
+    vertices = Bvh(boxes.vertices);
+    edges = Bvh(boxes.edges);
+    faces = Bvh(boxes.faces);
+  } else {
+    vertices.refit(boxes.vertices);
+    edges.refit(boxes.edges);
+    faces.refit(boxes.faces);
+  }
+}
 
 }  // namespace
 
@@ -60,16 +68,10 @@ void ObstacleCollisionDetector::set_obstacle(const TriangleMesh& obstacle, const
     throw InputError("obstacle detector: obstacle positions do not match its mesh");
   }
   const SweptBoxes boxes(obstacle, y0, y1);
-  if (m_obstacle != &obstacle || m_obstacle_vertices.num_primitives() != obstacle.num_vertices() ||
-      m_obstacle_faces.num_primitives() != obstacle.num_faces()) {
-    m_obstacle_vertices = Bvh(boxes.vertices);
-    m_obstacle_edges = Bvh(boxes.edges);
-    m_obstacle_faces = Bvh(boxes.faces);
-  } else {
-    m_obstacle_vertices.refit(boxes.vertices);
-    m_obstacle_edges.refit(boxes.edges);
-    m_obstacle_faces.refit(boxes.faces);
-  }
+  const bool other_mesh = m_obstacle != &obstacle ||
+                          m_obstacle_vertices.num_primitives() != obstacle.num_vertices() ||
+                          m_obstacle_faces.num_primitives() != obstacle.num_faces();
+  build_or_refit(other_mesh, boxes, m_obstacle_vertices, m_obstacle_edges, m_obstacle_faces);
   m_obstacle = &obstacle;
   m_y0 = &y0;
   m_y1 = &y1;
@@ -94,15 +96,8 @@ std::vector<ObstacleCollision> ObstacleCollisionDetector::detect(const Positions
   const Positions& y0 = *m_y0;
   const Positions& y1 = *m_y1;
   const SweptBoxes boxes(m_cloth, x0, x1);
-  if (m_cloth_vertices.num_primitives() != m_cloth.num_vertices()) {
-    m_cloth_vertices = Bvh(boxes.vertices);
-    m_cloth_edges = Bvh(boxes.edges);
-    m_cloth_faces = Bvh(boxes.faces);
-  } else {
-    m_cloth_vertices.refit(boxes.vertices);
-    m_cloth_edges.refit(boxes.edges);
-    m_cloth_faces.refit(boxes.faces);
-  }
+  build_or_refit(m_cloth_vertices.num_primitives() != m_cloth.num_vertices(), boxes,
+                 m_cloth_vertices, m_cloth_edges, m_cloth_faces);
   const auto& F = m_cloth.faces();
   const auto& E = m_cloth.edges();
   std::vector<ObstacleCollision> candidates;

@@ -3,9 +3,9 @@
 #include <gmpxx.h>
 
 #include <array>
-#include <climits>
 #include <stdexcept>
 
+#include "tailor/geometry/common_scale_integers.hpp"
 #include "tailor/geometry/fixed_int.hpp"
 
 namespace tailor::detail {
@@ -39,27 +39,7 @@ Number coefficient(int index, const Vector& u0, const Vector& v0, const Vector& 
 /// differences must fit).
 int sign_fixed(int index, const std::array<const Vec3*, 8>& x) {
   using Z = FixedInt<32>;
-  std::uint64_t mantissa[8][3];
-  int exponent[8][3];
-  int lowest = INT_MAX;
-  for (int i = 0; i < 8; ++i) {
-    for (int k = 0; k < 3; ++k) {
-      mantissa[i][k] = 0;
-      exponent[i][k] = 0;
-      const double v = (*x[i])[k];
-      if (v == 0.0) continue;
-      decompose_double(v, mantissa[i][k], exponent[i][k]);
-      lowest = std::min(lowest, exponent[i][k]);
-    }
-  }
-  Z value[8][3];
-  for (int i = 0; i < 8; ++i) {
-    for (int k = 0; k < 3; ++k) {
-      if (mantissa[i][k] != 0) {
-        value[i][k] = Z::scaled(mantissa[i][k], exponent[i][k] - lowest, (*x[i])[k] < 0.0);
-      }
-    }
-  }
+  const auto value = common_scale_integers<Z>(x);
   using V = std::array<Z, 3>;
   auto difference = [&](int i, int j) {
     return V{value[i][0] - value[j][0], value[i][1] - value[j][1], value[i][2] - value[j][2]};

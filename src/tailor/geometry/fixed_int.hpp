@@ -18,7 +18,7 @@ struct CapacityExceeded {};
 
 /// |v| = mantissa 2^exponent with an odd mantissa (v finite and nonzero): the exact
 /// integer view of a double. Scaling every coordinate of a query by 2^-(lowest exponent)
-/// makes them all integers (FixedInt::scaled).
+/// makes them all integers (common_scale_integers.hpp).
 inline void decompose_double(double v, std::uint64_t& mantissa, int& exponent) {
   const auto bits = std::bit_cast<std::uint64_t>(v);
   const int biased = static_cast<int>((bits >> 52) & 0x7ff);

@@ -15,6 +15,7 @@
 #include <limits>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "tailor/geometry/error.hpp"
@@ -307,8 +308,11 @@ class PlyParser {
     return value;
   }
 
-  /// Reads one scalar (bounds already checked) as a double.
-  double load_number(PlyType type) {
+  /// Reads one scalar (bounds already checked) as a Result: double for coordinates,
+  /// std::int64_t for list counts and indices, whose types the header admits only among
+  /// the integer ones (a float type there reads nothing and gives 0).
+  template <class Result>
+  Result load_as(PlyType type) {
     switch (type) {
       case PlyType::int8:
         return load<std::int8_t>();
@@ -323,31 +327,13 @@ class PlyParser {
       case PlyType::uint32:
         return load<std::uint32_t>();
       case PlyType::float32:
-        return load<float>();
+        if constexpr (std::is_floating_point_v<Result>) return load<float>();
+        break;
       case PlyType::float64:
-        return load<double>();
+        if constexpr (std::is_floating_point_v<Result>) return load<double>();
+        break;
     }
-    return 0.0;
-  }
-
-  /// Reads one integer scalar (bounds already checked).
-  std::int64_t load_integer(PlyType type) {
-    switch (type) {
-      case PlyType::int8:
-        return load<std::int8_t>();
-      case PlyType::uint8:
-        return load<std::uint8_t>();
-      case PlyType::int16:
-        return load<std::int16_t>();
-      case PlyType::uint16:
-        return load<std::uint16_t>();
-      case PlyType::int32:
-        return load<std::int32_t>();
-      case PlyType::uint32:
-        return load<std::uint32_t>();
-      default:
-        return 0;  // the header admits only integer count and index types here
-    }
+    return 0;
   }
 
   void need(std::size_t n, const PlyElement& element, std::int64_t i) {
@@ -382,7 +368,7 @@ class PlyParser {
         if (property.is_list) {
           need(ply_type_size(property.count_type), element, i);
           const std::size_t count_at = m_pos;
-          const std::int64_t n = load_integer(property.count_type);
+          const std::int64_t n = load_as<std::int64_t>(property.count_type);
           if (n < 0)
             fail_byte(count_at, fmt::format("negative list length {} in '{}' entry {}", n,
                                             excerpt(element.name), i));
@@ -391,7 +377,8 @@ class PlyParser {
           need(bytes, element, i);
           if (property.role == PlyRole::face_indices) {
             m_polygon.resize(static_cast<std::size_t>(n));
-            for (std::int64_t j = 0; j < n; ++j) m_polygon[j] = load_integer(property.value_type);
+            for (std::int64_t j = 0; j < n; ++j)
+              m_polygon[j] = load_as<std::int64_t>(property.value_type);
           } else {
             m_pos += bytes;
           }
@@ -401,7 +388,7 @@ class PlyParser {
             m_pos += ply_type_size(property.value_type);
           } else {
             const std::size_t at = m_pos;
-            const double value = load_number(property.value_type);
+            const double value = load_as<double>(property.value_type);
             if (!std::isfinite(value)) {
               fail_byte(at, fmt::format("vertex {} has a non-finite coordinate ({})", i, value));
             }

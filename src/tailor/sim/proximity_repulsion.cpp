@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "tailor/bvh/feature_boxes.hpp"
 #include "tailor/geometry/closest_point.hpp"
 
 namespace tailor {
@@ -32,13 +33,7 @@ struct EndBoxes {
         edges(static_cast<std::size_t>(mesh.num_edges())),
         faces(static_cast<std::size_t>(mesh.num_faces())) {
     for (Index v = 0; v < mesh.num_vertices(); ++v) vertices[v] = point_box(row(x, v), inflate);
-    for (Index e = 0; e < mesh.num_edges(); ++e) {
-      edges[e].extend(vertices[mesh.edges()(e, 0)]);
-      edges[e].extend(vertices[mesh.edges()(e, 1)]);
-    }
-    for (Index f = 0; f < mesh.num_faces(); ++f) {
-      for (int k = 0; k < 3; ++k) faces[f].extend(vertices[mesh.faces()(f, k)]);
-    }
+    bound_edges_and_faces(mesh, vertices, edges, faces);
   }
 };
 

@@ -1,0 +1,26 @@
+#pragma once
+/// @file
+/// Boxes of a mesh's edges and faces from the boxes of its vertices (swept or grown ones):
+/// a feature's box is the union of its vertices' boxes.
+
+#include <vector>
+
+#include "tailor/bvh/aabb.hpp"
+#include "tailor/mesh/triangle_mesh.hpp"
+
+namespace tailor {
+
+/// Grows `edges[e]` and `faces[f]` (one box per edge and per face of `mesh`, usually empty
+/// ones) to hold the boxes of their vertices, `vertices[v]`.
+inline void bound_edges_and_faces(const TriangleMesh& mesh, const std::vector<Aabb>& vertices,
+                                  std::vector<Aabb>& edges, std::vector<Aabb>& faces) {
+  for (Index e = 0; e < mesh.num_edges(); ++e) {
+    edges[e].extend(vertices[mesh.edges()(e, 0)]);
+    edges[e].extend(vertices[mesh.edges()(e, 1)]);
+  }
+  for (Index f = 0; f < mesh.num_faces(); ++f) {
+    for (int k = 0; k < 3; ++k) faces[f].extend(vertices[mesh.faces()(f, k)]);
+  }
+}
+
+}  // namespace tailor
