@@ -32,9 +32,12 @@ DetectionConfig cones_and_radial_view() {
 }
 
 TEST(RadialViewCulling, FoldingTubesNeverLoseACollision) {
-  const int runs = sanitized() ? 6 : 40;
+  // Under the sanitizers every sixth seed (7 of 40): the sample still holds tubes whose
+  // clusters are certified whole (seeds 6, 13-17, 26-28, ... in release), so every
+  // assertion below stays live.
+  const int stride = sanitized() ? 6 : 1;
   std::int64_t collisions = 0, ctps_before = 0, ctps_after = 0, clean = 0, certified = 0;
-  for (int seed = 0; seed < runs; ++seed) {
+  for (int seed = 0; seed < 40; seed += stride) {
     SCOPED_TRACE(seed);
     const TubeStep step = random_folding_tube(static_cast<unsigned>(seed));
     const Positions& x0 = step.mesh.vertices;
