@@ -2,6 +2,7 @@
 /// Cloth model: derivatives against finite differences, a hanging cloth, stability.
 
 #include "support/sanitized.hpp"
+#include "sim/flat_sheet.hpp"
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,32 +16,6 @@ namespace tailor {
 namespace {
 
 using tailor::testing::sanitized;
-
-/// A square sheet of n × n vertices, side `size` metres, in the x-z plane at y = 0.
-struct Sheet {
-  Positions rest;
-  std::unique_ptr<TriangleMesh> mesh;
-};
-
-Sheet make_sheet(int n, double size) {
-  Sheet s;
-  s.rest.resize(n * n, 3);
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j)
-      s.rest.row(i * n + j) << size * j / (n - 1), 0.0, size * i / (n - 1);
-  }
-  FaceArray f(2 * (n - 1) * (n - 1), 3);
-  int k = 0;
-  for (int i = 0; i + 1 < n; ++i) {
-    for (int j = 0; j + 1 < n; ++j) {
-      const int a = i * n + j, b = a + 1, c = a + n, d = c + 1;
-      f.row(k++) << a, c, b;
-      f.row(k++) << b, c, d;
-    }
-  }
-  s.mesh = std::make_unique<TriangleMesh>(n * n, f);
-  return s;
-}
 
 TEST(DihedralAngle, GradientMatchesFiniteDifferences) {
   std::mt19937 rng(7);
@@ -76,7 +51,7 @@ TEST(DihedralAngle, FlatIsZeroAndFoldSignsDiffer) {
 }
 
 TEST(ClothModel, ForcesAreMinusEnergyGradient) {
-  Sheet s = make_sheet(4, 0.3);
+  testing::Sheet s = testing::make_sheet(4, 0.3);
   ClothMaterial m;
   m.bending_stiffness = 1e-3;  // large enough to matter in the check
   const ClothModel model(*s.mesh, s.rest, m);
@@ -99,7 +74,7 @@ TEST(ClothModel, ForcesAreMinusEnergyGradient) {
 }
 
 TEST(ClothModel, RestShapeHasNoEnergyAndMassesSumToDensityTimesArea) {
-  Sheet s = make_sheet(5, 0.4);
+  testing::Sheet s = testing::make_sheet(5, 0.4);
   ClothMaterial m;
   const ClothModel model(*s.mesh, s.rest, m);
   EXPECT_NEAR(model.elastic_energy(s.rest), 0.0, 1e-14);
@@ -108,7 +83,7 @@ TEST(ClothModel, RestShapeHasNoEnergyAndMassesSumToDensityTimesArea) {
 }
 
 TEST(ClothModel, RejectsBadMaterial) {
-  Sheet s = make_sheet(3, 0.1);
+  testing::Sheet s = testing::make_sheet(3, 0.1);
   ClothMaterial m;
   m.density = 0;
   EXPECT_THROW(ClothModel(*s.mesh, s.rest, m), InputError);
@@ -120,7 +95,7 @@ TEST(ClothModel, RejectsBadMaterial) {
 /// A sheet pinned along one edge, hanging under gravity at 30 fps with `substeps`.
 void run_hanging_sheet(ClothSolver solver, int substeps, int frames, bool weft_down = false,
                        double energy_slack = 1e-9) {
-  Sheet s = make_sheet(12, 0.5);
+  testing::Sheet s = testing::make_sheet(12, 0.5);
   // Warp across (x) or along (z) the direction the sheet will hang in.
   Positions warp(s.mesh->num_faces(), 3);
   warp.rowwise() = weft_down ? Eigen::RowVector3d(1, 0, 0) : Eigen::RowVector3d(0, 0, 1);

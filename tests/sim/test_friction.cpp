@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "sim/flat_sheet.hpp"
+
 #include <cmath>
 #include <numbers>
 
@@ -15,32 +17,6 @@ namespace {
 
 constexpr double kFriction = 0.3;
 constexpr double kGravity = 9.81;
-
-/// A flat square patch of n × n vertices on the plane y = 0.
-struct Patch {
-  Positions rest;
-  std::unique_ptr<TriangleMesh> mesh;
-};
-
-Patch make_patch(int n, double size) {
-  Patch p;
-  p.rest.resize(n * n, 3);
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j)
-      p.rest.row(i * n + j) << size * j / (n - 1), 0.0, size * i / (n - 1);
-  }
-  FaceArray f(2 * (n - 1) * (n - 1), 3);
-  int k = 0;
-  for (int i = 0; i + 1 < n; ++i) {
-    for (int j = 0; j + 1 < n; ++j) {
-      const int a = i * n + j, b = a + 1, c = a + n, d = c + 1;
-      f.row(k++) << a, c, b;
-      f.row(k++) << b, c, d;
-    }
-  }
-  p.mesh = std::make_unique<TriangleMesh>(n * n, f);
-  return p;
-}
 
 /// The default cotton without air drag, so only friction slows the patch down.
 ClothMaterial no_air_damping() {
@@ -59,7 +35,7 @@ struct SlideResult {
 /// `seconds` at 150 steps per second. Contact springs hold every vertex on the plane,
 /// with the normal force and the slip speed lagged by one step.
 SlideResult slide(double degrees, double v0, double seconds) {
-  const Patch p = make_patch(4, 0.06);
+  const testing::Sheet p = testing::make_sheet(4, 0.06);
   ClothModel model(*p.mesh, p.rest, no_air_damping());
   const double theta = degrees * std::numbers::pi / 180;
   const Vec3 g(kGravity * std::sin(theta), -kGravity * std::cos(theta), 0);
@@ -142,7 +118,7 @@ TEST(Friction, SlidingPatchStopsBelowTheCoulombAngle) {
 
 TEST(Friction, NoFrictionSlidesAtAnyAngle) {
   // Control: with the same contact but μ = 0 the patch slides even at 5°.
-  const Patch p = make_patch(3, 0.04);
+  const testing::Sheet p = testing::make_sheet(3, 0.04);
   ClothModel model(*p.mesh, p.rest, no_air_damping());
   const double theta = 5 * std::numbers::pi / 180;
   const Vec3 g(kGravity * std::sin(theta), -kGravity * std::cos(theta), 0);
