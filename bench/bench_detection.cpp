@@ -89,16 +89,22 @@ void BM_DetectFoldedStep(benchmark::State& state) {
   detect_step(state, folded_scene(state.range(0)), static_cast<int>(state.range(1)));
 }
 
-// Refitting swept boxes and cones only.
-void BM_RefitOnly(benchmark::State& state) {
+// Refitting swept boxes and direction masks (or boxes only).
+void refit(benchmark::State& state, bool with_directions) {
   const Scene& s = scene(static_cast<int>(state.range(0)), state.range(2) / 100.0);
   MeshBvh bvh(*s.mesh, s.x0);
   tbb::task_arena arena(static_cast<int>(state.range(1)));
   for (auto _ : state) {
-    arena.execute([&] { bvh.refit(s.x0, s.x1, true); });
+    arena.execute([&] { bvh.refit(s.x0, s.x1, with_directions); });
     benchmark::DoNotOptimize(bvh.box(0));
   }
   state.counters["triangles"] = s.mesh->num_faces();
+}
+void BM_RefitOnly(benchmark::State& state) {
+  refit(state, true);
+}
+void BM_RefitBoxesOnly(benchmark::State& state) {
+  refit(state, false);
 }
 
 void sizes(benchmark::internal::Benchmark* b) {
@@ -117,6 +123,7 @@ BENCHMARK(BM_DetectFoldedStep)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(BM_RefitOnly)->Apply(sizes);
+BENCHMARK(BM_RefitBoxesOnly)->Apply(sizes);
 
 }  // namespace
 }  // namespace tailor

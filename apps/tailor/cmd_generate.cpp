@@ -26,7 +26,9 @@ struct GenerateOptions {
 int run_generate(const GenerateOptions& options) {
   const std::filesystem::path dir(options.out);
   prepare_output_folder(dir);  // before the work; a file there is an InputError (exit 2)
-  const ProceduralStep step = make_folded_cloth_on_sphere(options.triangles, options.seed);
+  const ProceduralStep step = options.scene == "crumpling-cloth"
+                                  ? make_crumpling_cloth_step(options.triangles)
+                                  : make_folded_cloth_on_sphere(options.triangles, options.seed);
   write_mesh(dir / "t0.ply", step.x0, step.faces);
   write_mesh(dir / "t1.ply", step.x1, step.faces);
   fmt::print("{}: {} vertices, {} triangles -> {} and {}\n", options.scene, step.x0.rows(),
@@ -39,8 +41,11 @@ const CommandRegistration registration{
       CLI::App* command = app.add_subcommand(
           "generate", "Write a procedural deforming step (t0.ply, t1.ply) for detect and bench");
       auto options = std::make_shared<GenerateOptions>();
-      command->add_option("scene", options->scene, "Scene: folded-cloth (cloth folded on a sphere)")
-          ->check(CLI::IsMember({"folded-cloth"}));
+      command
+          ->add_option("scene", options->scene,
+                       "Scene: folded-cloth (cloth folded onto itself on a sphere: contact-heavy) or "
+                       "crumpling-cloth (a crumpling square cloth: no contact)")
+          ->check(CLI::IsMember({"folded-cloth", "crumpling-cloth"}));
       command->add_option("--triangles", options->triangles, "Approximate triangle count")
           ->check(CLI::Range(std::int64_t{200}, std::int64_t{1} << 26));
       command->add_option("--seed", options->seed, "Random seed");

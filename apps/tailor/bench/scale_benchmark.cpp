@@ -50,18 +50,7 @@ struct ScaleScene {
   std::vector<std::vector<Index>> section_loops;
 };
 
-ScaleScene crumpling_cloth_scene(Index triangles) {
-  const int cells = std::max(2, static_cast<int>(std::lround(std::sqrt(triangles / 2.0))));
-  ScaleScene scene;
-  scene.mesh = make_grid(cells, cells, 1.0, 1.0);
-  const Positions rest = scene.mesh.vertices;
-  scene.mesh.vertices = crumpling_cloth(rest, 0.5);
-  scene.x1 = crumpling_cloth(rest, 0.51);
-  return scene;
-}
-
-ScaleScene folded_cloth_scene(Index triangles) {
-  ProceduralStep step = make_folded_cloth_on_sphere(triangles);
+ScaleScene from_step(ProceduralStep step) {
   ScaleScene scene;
   scene.mesh.vertices = std::move(step.x0);
   scene.mesh.faces = std::move(step.faces);
@@ -100,8 +89,8 @@ ScaleScene sleeve_scene(Index triangles) {
 }
 
 ScaleScene make_scene(const std::string& name, Index triangles) {
-  if (name == "cloth") return crumpling_cloth_scene(triangles);
-  if (name == "folded") return folded_cloth_scene(triangles);
+  if (name == "cloth") return from_step(make_crumpling_cloth_step(triangles));
+  if (name == "folded") return from_step(make_folded_cloth_on_sphere(triangles));
   return sleeve_scene(triangles);
 }
 

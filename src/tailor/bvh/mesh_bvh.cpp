@@ -3,13 +3,33 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace tailor {
 namespace {
 
-// Subtrees with more faces than this are refitted as two parallel tasks.
+// Subtrees of at most this many faces are refitted by one task.
 constexpr Index kParallelGrain = 4096;
+
+constexpr double kFloatMax = std::numeric_limits<float>::max();
+
+// min and max in the form that compiles to minpd/maxpd (exact for the finite inputs here).
+inline double smaller(double a, double b) {
+  return b < a ? b : a;
+}
+inline double larger(double a, double b) {
+  return a < b ? b : a;
+}
+
+// A double that converts to a float <= x (float_at_most, float_box.hpp), clamped to the
+// float range: beyond it a box no longer holds its points, but every overlap is kept (the
+// rounding is monotone, so overlapping intervals stay overlapping), which is all the
+// traversal asks of boxes. Branch-free, so that loops of it vectorise.
+inline double below_in_float_range(double x) {
+  return larger(smaller(x - std::fabs(x) * 0x1p-23 - 0x1p-149, kFloatMax), -kFloatMax);
+}
 
 }  // namespace
 
@@ -32,121 +52,155 @@ MeshBvh::MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector
   centers = {};
   const Index n = layout.num_nodes();
   m_nodes.resize(static_cast<std::size_t>(n));
-  m_cone_slot.assign(static_cast<std::size_t>(n), -1);
-  Index cones = 0;
   for (Index node = 0; node < n; ++node) {
     m_nodes[node].count = layout.count[node];
-    if (layout.is_leaf(node)) {
-      m_nodes[node].right_or_face = m_faces[layout.right[node]];
-      continue;
-    }
-    m_nodes[node].right_or_face = layout.right[node];
-    // Inner nodes with a cone: the large ones, and the roots of small subtrees.
-    if (layout.count[node] >= kDirectConeFaces) {
-      m_cone_slot[node] = cones++;
-      for (Index child : {node + 1, layout.right[node]}) {
-        if (!layout.is_leaf(child) && layout.count[child] < kDirectConeFaces) {
-          m_cone_slot[child] = cones++;
-        }
-      }
-    } else if (node == 0) {
-      m_cone_slot[node] = cones++;
-    }
+    m_nodes[node].right_or_face =
+        layout.is_leaf(node) ? m_faces[layout.right[node]] : layout.right[node];
   }
-  m_cones.assign(static_cast<std::size_t>(cones), NormalCone::wide());
-  // Task roots: the largest subtrees of at most kParallelGrain faces; the nodes above
-  // them are refitted after them, in decreasing id order.
-  enum : char { kBelow, kTaskRoot, kTopNode };
-  std::vector<char> role(static_cast<std::size_t>(n), kBelow);
+  layout = {};
+
+  // Roles, top-down: merge nodes (>= kGroupFaces faces), group roots (the largest subtrees
+  // below), task roots (the largest subtrees of at most kParallelGrain faces).
+  std::vector<char> group_root(static_cast<std::size_t>(n), 0), task_root(group_root);
   std::vector<Index> stack{0};
   while (!stack.empty()) {
     const Index node = stack.back();
     stack.pop_back();
-    if (size(node) <= kParallelGrain) {
-      role[node] = kTaskRoot;
+    if (size(node) < kGroupFaces) {
+      group_root[node] = 1;
     } else {
-      role[node] = kTopNode;
       stack.push_back(right(node));
-      stack.push_back(node + 1);
+      stack.push_back(left(node));
     }
   }
-  // Corners in leaf order (= increasing id), and the leaves before each task root.
+  stack.push_back(0);
+  while (!stack.empty()) {
+    const Index node = stack.back();
+    stack.pop_back();
+    if (size(node) <= kParallelGrain) {
+      task_root[node] = 1;
+    } else {
+      m_top_merges.push_back(node);
+      stack.push_back(right(node));
+      stack.push_back(left(node));
+    }
+  }
+  std::sort(m_top_merges.rbegin(), m_top_merges.rend());
+
+  // Slots, groups, merge nodes and the corners in leaf order (= increasing id).
+  m_slot.assign(static_cast<std::size_t>(n), -1);
+  Index slots = 0;
   m_leaf_vertices.reserve(m_faces.size());
   for (Index node = 0; node < n; ++node) {
-    const TaskRoot root{node, static_cast<Index>(m_leaf_vertices.size())};
-    if (role[node] == kTaskRoot) m_task_roots.push_back(root);
-    if (role[node] == kTopNode) m_top_nodes.push_back(root);
+    if (group_root[node]) {
+      m_slot[node] = slots++;
+      m_groups.push_back({node, static_cast<Index>(m_leaf_vertices.size()),
+                          static_cast<Index>(m_groups.size())});
+      // Its leaves and inner nodes in increasing id order (inner: count - 1 of them).
+      for (Index member = node; member < node + 2 * size(node) - 1; ++member) {
+        (is_leaf(member) ? m_group_leaf_nodes : m_group_inner_nodes).push_back(member);
+      }
+    } else if (size(node) >= kGroupFaces) {
+      m_slot[node] = slots++;
+      m_merge_nodes.push_back(node);
+    }
     if (is_leaf(node)) {
       const auto v = mesh.faces().row(leaf_face(node));
       m_leaf_vertices.push_back({v[0], v[1], v[2]});
     }
   }
-  std::reverse(m_top_nodes.begin(), m_top_nodes.end());
+  m_masks.assign(static_cast<std::size_t>(slots), 0);
+
+  // A task's subtree is the id range [root, root + 2·size - 1): its groups and merge
+  // nodes are contiguous in the sorted lists.
+  for (Index node = 0; node < n; ++node) {
+    if (!task_root[node]) continue;
+    const Index end = node + 2 * size(node) - 1;
+    const auto group_at = [&](Index id) {
+      return static_cast<Index>(
+          std::lower_bound(m_groups.begin(), m_groups.end(), id,
+                           [](const Group& g, Index x) { return g.root < x; }) -
+          m_groups.begin());
+    };
+    const auto merge_at = [&](Index id) {
+      return static_cast<Index>(
+          std::lower_bound(m_merge_nodes.begin(), m_merge_nodes.end(), id) -
+          m_merge_nodes.begin());
+    };
+    m_tasks.push_back({group_at(node), group_at(end), merge_at(node), merge_at(end)});
+  }
   refit(x_build, x_build, false);
 }
 
-void MeshBvh::refit(const Positions& x0, const Positions& x1, bool with_cones) {
+void MeshBvh::refit(const Positions& x0, const Positions& x1, bool with_directions) {
   if (m_nodes.empty()) return;
-  tbb::parallel_for(std::size_t{0}, m_task_roots.size(), [&](std::size_t i) {
-    const TaskRoot& root = m_task_roots[i];
-    refit_range(root.node, root.node + 2 * size(root.node) - 1, root.leaves_before, x0, x1,
-                with_cones);
+  tbb::parallel_for(std::size_t{0}, m_tasks.size(), [&](std::size_t t) {
+    const Task& task = m_tasks[t];
+    for (Index g = task.groups_begin; g < task.groups_end; ++g) {
+      if (g + 1 < task.groups_end) prefetch_corners(m_groups[g + 1], x0, x1);
+      refit_group(m_groups[g], x0, x1, with_directions);
+    }
+    for (Index k = task.merges_end - 1; k >= task.merges_begin; --k) {
+      merge(m_merge_nodes[k], with_directions);
+    }
   });
-  for (const TaskRoot& top : m_top_nodes) {
-    refit_range(top.node, top.node + 1, top.leaves_before, x0, x1, with_cones);
+  for (Index node : m_top_merges) merge(node, with_directions);
+}
+
+void MeshBvh::prefetch_corners(const Group& group, const Positions& x0,
+                               const Positions& x1) const {
+  const Index count = size(group.root);
+  for (Index l = 0; l < count; ++l) {
+    for (Index v : m_leaf_vertices[group.first_leaf + l]) {
+      __builtin_prefetch(&x0(v, 0));
+      __builtin_prefetch(&x1(v, 0));
+    }
   }
 }
 
-NormalCone MeshBvh::direct_cone(Index first_leaf, Index count, const Positions& x0,
-                                const Positions& x1) const {
-  MovingTriangle triangles[kDirectConeFaces];
-  for (Index i = 0; i < count; ++i) {
-    const auto& v = m_leaf_vertices[first_leaf + i];
-    triangles[i] = {&x0(v[0], 0), &x0(v[1], 0), &x0(v[2], 0),
-                    &x1(v[0], 0), &x1(v[1], 0), &x1(v[2], 0)};
-  }
-  return continuous_normal_cone(
-      std::span<const MovingTriangle>(triangles, static_cast<std::size_t>(count)));
-}
-
-void MeshBvh::refit_range(Index begin, Index end, Index leaves_before, const Positions& x0,
-                          const Positions& x1, bool with_cones) {
-  // Leaves of the range in decreasing order too; `leaf` is the next one to visit (a
-  // whole subtree of s faces has 2s - 1 nodes and s leaves; one inner node none).
-  const Index leaves = is_leaf(begin) || end - begin > 1 ? (end - begin + 1) / 2 : 0;
-  Index leaf = leaves_before + leaves - 1;
-  for (Index node = end - 1; node >= begin; --node) {
-    Node& record = m_nodes[node];
-    if (record.count == 1) {
-      const auto& v = m_leaf_vertices[leaf--];
-      const double* p[6] = {&x0(v[0], 0), &x0(v[1], 0), &x0(v[2], 0),
-                            &x1(v[0], 0), &x1(v[1], 0), &x1(v[2], 0)};
-      double low[3], high[3];
-      for (int k = 0; k < 3; ++k) {
-        low[k] = high[k] = p[0][k];
-        for (int i = 1; i < 6; ++i) {
-          low[k] = p[i][k] < low[k] ? p[i][k] : low[k];
-          high[k] = p[i][k] > high[k] ? p[i][k] : high[k];
-        }
+void MeshBvh::refit_group(const Group& group, const Positions& x0, const Positions& x1,
+                          bool with_directions) {
+  const Index count = size(group.root);
+  const double* p0 = x0.data();
+  const double* p1 = x1.data();
+  MovingTriangleBatch batch;
+  // Leaf boxes straight from the corners (leaves in increasing id order), rounded outward.
+  const Index* leaf_node = &m_group_leaf_nodes[group.first_leaf];
+  for (Index l = 0; l < count; ++l) {
+    const auto& v = m_leaf_vertices[group.first_leaf + l];
+    const double* corner[6] = {p0 + 3 * v[0], p0 + 3 * v[1], p0 + 3 * v[2],
+                               p1 + 3 * v[0], p1 + 3 * v[1], p1 + 3 * v[2]};
+    FloatBox& box = m_nodes[leaf_node[l]].box;
+    for (int k = 0; k < 3; ++k) {
+      double lo = corner[0][k], hi = lo;
+      for (int c = 1; c < 6; ++c) {
+        lo = smaller(lo, corner[c][k]);
+        hi = larger(hi, corner[c][k]);
       }
-      record.box = FloatBox::enclosing(low, high);
-      continue;
+      box.min[k] = static_cast<float>(below_in_float_range(lo));
+      box.max[k] = static_cast<float>(-below_in_float_range(-hi));
     }
-    record.box = m_nodes[node + 1].box;
+    if (with_directions) batch.add(corner[0], corner[1], corner[2], corner[3], corner[4], corner[5]);
+  }
+  // The group's inner nodes, children first.
+  const Index* inner = &m_group_inner_nodes[group.first_leaf - group.index];
+  for (Index i = count - 2; i >= 0; --i) {
+    Node& record = m_nodes[inner[i]];
+    record.box = m_nodes[inner[i] + 1].box;
     record.box.extend(m_nodes[record.right_or_face].box);
-    if (!with_cones || m_cone_slot[node] < 0) continue;
-    // This node's leaves are the `count` leaves after `leaf`, its left child's first.
-    NormalCone& cone = m_cones[m_cone_slot[node]];
-    if (record.count < kDirectConeFaces) {
-      cone = direct_cone(leaf + 1, record.count, x0, x1);
-    } else {
-      const Index left = node + 1, right = record.right_or_face;
-      const auto child_cone = [&](Index child, Index first_leaf) {
-        return m_cone_slot[child] >= 0 ? m_cones[m_cone_slot[child]]
-                                       : direct_cone(first_leaf, size(child), x0, x1);
-      };
-      cone = child_cone(left, leaf + 1).merged(child_cone(right, leaf + 1 + size(left)));
-    }
+  }
+  if (with_directions) {
+    batch.pad();
+    m_masks[m_slot[group.root]] = tailor::direction_mask(batch);
+  }
+}
+
+void MeshBvh::merge(Index node, bool with_directions) {
+  Node& record = m_nodes[node];
+  record.box = m_nodes[node + 1].box;
+  record.box.extend(m_nodes[record.right_or_face].box);
+  if (with_directions) {
+    m_masks[m_slot[node]] = m_masks[m_slot[node + 1]] & m_masks[m_slot[record.right_or_face]];
   }
 }
 

@@ -1,42 +1,44 @@
 #pragma once
 /// @file
 /// The BVH of a deforming triangle mesh: swept face boxes (float, rounded outward) and
-/// continuous normal cones, in flat arrays refitted in one pass.
+/// continuous normal bounds (direction masks), in flat arrays refitted in one pass.
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "tailor/bvh/bvh_layout.hpp"
+#include "tailor/bvh/direction_mask.hpp"
 #include "tailor/bvh/float_box.hpp"
-#include "tailor/bvh/normal_cone.hpp"
 #include "tailor/mesh/triangle_mesh.hpp"
 
 namespace tailor {
 
 /// A BVH over a subset of the faces of a mesh (all of them by default), built once on
 /// one frame (build_surface_layout: nodes are connected patches where possible, so that
-/// normal cones can certify them) and refitted every step with swept boxes (box of x0
-/// and x1) and continuous normal cones merged upward.
+/// normal bounds can certify them) and refitted every step with swept boxes (box of x0
+/// and x1) and direction masks merged upward.
 ///
 /// Layout (BvhLayout): pre-order, the left child of inner node i is i + 1. Each node is
 /// one 32-byte record (box, right child or face, face count), 64 bytes per face, plus the
 /// corners of each face in leaf order (12 bytes) so the refit reads them in sequence.
 ///
-/// Cones: a subtree of fewer than kDirectConeFaces faces whose parent is larger gets one
-/// cone computed directly from its faces' control normals; larger nodes merge their
-/// children's cones; nodes inside such a small subtree get none (wide: never culled by
-/// cones, their few pairs are left to adjacency culling and the low level). This keeps
-/// square roots and divisions off the per-face path of the refit, and about one stored
-/// cone (40 bytes) per 8 faces.
+/// Refit in two kinds of work. A *group* is a maximal subtree of fewer than kGroupFaces
+/// faces: its faces' corners are read once into a MovingTriangleBatch, from which its
+/// leaf boxes and its direction mask are computed in vectorisable loops, then its inner
+/// boxes bottom-up. A *merge node* (kGroupFaces faces or more) joins its children's boxes
+/// and masks (bitwise and: exact, direction_mask.hpp). Masks are kept for groups and merge
+/// nodes only (one per about 8 faces); nodes inside a group are never certified (their few
+/// pairs are left to adjacency culling and the low level).
 class MeshBvh {
  public:
   MeshBvh() = default;
   /// Builds over `faces` (mesh face ids), or over every face when `faces` is empty.
   MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector<Index> faces = {});
 
-  /// Refits boxes (and cones when `with_cones`) to the step from `x0` to `x1` in one
-  /// bottom-up pass (parallel over disjoint subtrees).
-  void refit(const Positions& x0, const Positions& x1, bool with_cones);
+  /// Refits boxes (and direction masks when `with_directions`) to the step from `x0` to
+  /// `x1` in one bottom-up pass (parallel over disjoint subtrees).
+  void refit(const Positions& x0, const Positions& x1, bool with_directions);
 
   bool empty() const { return m_nodes.empty(); }
   Index num_nodes() const { return static_cast<Index>(m_nodes.size()); }
@@ -50,48 +52,63 @@ class MeshBvh {
   Index leaf_face(Index node) const { return m_nodes[node].right_or_face; }
   /// Swept box of a node (valid after refit).
   const FloatBox& box(Index node) const { return m_nodes[node].box; }
-  /// Continuous normal cone of an inner node (valid after refit with cones); wide for the
-  /// nodes below a subtree of fewer than kDirectConeFaces faces (see refit).
-  const NormalCone& cone(Index node) const {
-    return m_cone_slot[node] >= 0 ? m_cones[m_cone_slot[node]] : kWide;
+  /// Directions within 90° of every normal below the node over the step (valid after a
+  /// refit with directions); 0 for the nodes inside a group, which keep no mask.
+  DirectionMask direction_mask(Index node) const {
+    return m_slot[node] >= 0 ? m_masks[m_slot[node]] : 0;
   }
-  /// Whether a node keeps a cone (the others report wide()), and its index among the
-  /// num_cones() nodes that do.
-  bool has_cone(Index node) const { return m_cone_slot[node] >= 0; }
-  Index cone_index(Index node) const { return m_cone_slot[node]; }
-  Index num_cones() const { return static_cast<Index>(m_cones.size()); }
+  /// A unit axis within 90° of every normal below the node over the whole step (the
+  /// first direction of its mask), or nothing.
+  std::optional<Vec3> acute_axis(Index node) const {
+    const DirectionMask mask = direction_mask(node);
+    if (mask == 0) return std::nullopt;
+    return first_mask_direction(mask);
+  }
+  /// Whether a node keeps a mask (groups and merge nodes), and its index among the
+  /// num_masks() nodes that do.
+  bool has_mask(Index node) const { return m_slot[node] >= 0; }
+  Index mask_index(Index node) const { return m_slot[node]; }
+  Index num_masks() const { return static_cast<Index>(m_masks.size()); }
   /// The faces the tree was built over, in the order given.
   const std::vector<Index>& faces() const { return m_faces; }
 
  private:
-  static constexpr Index kDirectConeFaces = 16;
-  static inline const NormalCone kWide = NormalCone::wide();
+  static constexpr Index kGroupFaces = 16;
+  static_assert(kGroupFaces <= MovingTriangleBatch::kCapacity + 1);
 
   struct Node {
     FloatBox box;
     Index right_or_face = -1;
     Index count = 0;
   };
-  // Refits the nodes with ids in [begin, end) in decreasing order (children first): a
-  // whole subtree, or one node above the task roots. `leaves_before` is the number of
-  // leaves with ids below `begin`.
-  void refit_range(Index begin, Index end, Index leaves_before, const Positions& x0,
-                   const Positions& x1, bool with_cones);
-  // The cone of the `count` faces of leaves first_leaf, first_leaf + 1, ... (leaf order).
-  NormalCone direct_cone(Index first_leaf, Index count, const Positions& x0,
-                         const Positions& x1) const;
+  struct Group {
+    Index root, first_leaf;  // its leaves are first_leaf, first_leaf + 1, ... (leaf order)
+    Index index;             // its position in m_groups
+  };
+  // The work of one parallel task: a range of groups, then a range of merge nodes
+  // (visited in decreasing id order, children first).
+  struct Task {
+    Index groups_begin, groups_end, merges_begin, merges_end;
+  };
+  // Asks the cache for the corners of a group the refit will read next.
+  void prefetch_corners(const Group& group, const Positions& x0, const Positions& x1) const;
+  void refit_group(const Group& group, const Positions& x0, const Positions& x1,
+                   bool with_directions);
+  void merge(Index node, bool with_directions);
 
   const TriangleMesh* m_mesh = nullptr;
   std::vector<Index> m_faces;
   std::vector<Node> m_nodes;
-  std::vector<Index> m_cone_slot;  // inner node -> index into m_cones
-  std::vector<NormalCone> m_cones;
+  std::vector<Index> m_slot;  // node -> index into m_masks, or -1
+  std::vector<DirectionMask> m_masks;
   std::vector<std::array<Index, 3>> m_leaf_vertices;  // in leaf order, for a coherent refit
-  struct TaskRoot {
-    Index node, leaves_before;
-  };
-  std::vector<TaskRoot> m_task_roots;  // disjoint subtrees refitted in parallel
-  std::vector<TaskRoot> m_top_nodes;   // the nodes above them, decreasing
+  std::vector<Group> m_groups;                        // increasing root id
+  // Node ids of every group's leaves (indexed like m_leaf_vertices) and inner nodes
+  // (size - 1 per group, from first_leaf - index), each in increasing id order.
+  std::vector<Index> m_group_leaf_nodes, m_group_inner_nodes;
+  std::vector<Index> m_merge_nodes;                   // increasing id
+  std::vector<Task> m_tasks;                          // disjoint subtrees
+  std::vector<Index> m_top_merges;                    // merge nodes above the tasks, decreasing
 };
 
 }  // namespace tailor

@@ -23,18 +23,20 @@ class CandidateTraversal::Walk {
   void self(const MeshBvh& bvh, const NodeContours& contours, StepPositions step, Index node,
             ThreadOutput& out) {
     if (bvh.is_leaf(node)) return;
-    if (m_options.normal_cones && bvh.cone(node).is_under_90_degrees()) {
-      if (!m_options.contour_test) {
-        ++out.counts.nodes_culled_by_cones;
-        return;
+    if (m_options.normal_cones) {
+      if (const std::optional<Vec3> axis = bvh.acute_axis(node)) {
+        if (!m_options.contour_test) {
+          ++out.counts.nodes_culled_by_cones;
+          return;
+        }
+        ++out.counts.contour_tests;
+        if (contours.has_single_loop(node) &&
+            contour_stays_simple(contours.loop(node), step.x0, step.x1, *axis)) {
+          ++out.counts.nodes_culled_by_cones;
+          return;
+        }
+        ++out.counts.contour_tests_failed;
       }
-      ++out.counts.contour_tests;
-      if (contours.has_single_loop(node) &&
-          contour_stays_simple(contours.loop(node), step.x0, step.x1, bvh.cone(node).axis)) {
-        ++out.counts.nodes_culled_by_cones;
-        return;
-      }
-      ++out.counts.contour_tests_failed;
     }
     const Index left = bvh.left(node), right = bvh.right(node);
     if (bvh.size(node) > kTaskGrain) {

@@ -50,9 +50,9 @@ struct ContourBuilder {
         }
       }
     }
-    // Only nodes with a cone are ever tested (leaves never: a triangle cannot touch
+    // Only nodes with a mask are ever tested (leaves never: a triangle cannot touch
     // itself).
-    if (bvh.has_cone(node) && valid) record_loop(bvh.cone_index(node), boundary);
+    if (bvh.has_mask(node) && valid) record_loop(bvh.mask_index(node), boundary);
     return boundary;
   }
 
@@ -92,9 +92,9 @@ NodeContours::NodeContours(const TriangleMesh& mesh, const MeshBvh& bvh) {
   const Index n = bvh.num_nodes();
   m_slot.resize(static_cast<std::size_t>(n));
   for (Index node = 0; node < n; ++node)
-    m_slot[node] = bvh.has_cone(node) ? bvh.cone_index(node) : -1;
-  m_loop_start.assign(static_cast<std::size_t>(bvh.num_cones()), 0);
-  m_loop_length.assign(static_cast<std::size_t>(bvh.num_cones()), 0);
+    m_slot[node] = bvh.has_mask(node) ? bvh.mask_index(node) : -1;
+  m_loop_start.assign(static_cast<std::size_t>(bvh.num_masks()), 0);
+  m_loop_length.assign(static_cast<std::size_t>(bvh.num_masks()), 0);
   if (n == 0) return;
   ContourBuilder builder{mesh, bvh, m_loop_start, m_loop_length, m_loop_vertices};
   bool valid = true;

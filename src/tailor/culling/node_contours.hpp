@@ -10,8 +10,8 @@
 
 namespace tailor {
 
-/// For every node of a MeshBvh that keeps a cone (the only ones the traversal tests):
-/// whether its faces can be certified by the normal-cone
+/// For every node of a MeshBvh that keeps a direction mask (the only ones the traversal
+/// tests): whether its faces can be certified by the normal-cone
 /// theorem at all (edge-manifold, consistently oriented, exactly one boundary loop), and
 /// that loop. A patch whose normals all lie within 90° of an axis is immersed in the
 /// plane by the projection along that axis; with one simple boundary loop the immersion
@@ -22,7 +22,7 @@ class NodeContours {
   NodeContours() = default;
   NodeContours(const TriangleMesh& mesh, const MeshBvh& bvh);
 
-  /// True when the node keeps a cone and its faces have exactly one consistently oriented
+  /// True when the node keeps a mask and its faces have exactly one consistently oriented
   /// boundary loop.
   bool has_single_loop(Index node) const { return !loop(node).empty(); }
   /// Vertices of the node's boundary loop in walking order (empty if none).
@@ -36,9 +36,9 @@ class NodeContours {
   std::size_t stored_vertices() const { return m_loop_vertices.size(); }
 
  private:
-  std::vector<Index> m_slot;               // node -> its MeshBvh cone index, or -1
-  std::vector<std::int64_t> m_loop_start;  // per cone index
-  std::vector<Index> m_loop_length;        // per cone index (0: no single loop)
+  std::vector<Index> m_slot;               // node -> its MeshBvh mask index, or -1
+  std::vector<std::int64_t> m_loop_start;  // per mask index
+  std::vector<Index> m_loop_length;        // per mask index (0: no single loop)
   std::vector<Index> m_loop_vertices;
 };
 

@@ -107,4 +107,16 @@ ProceduralStep make_folded_cloth_on_sphere(std::int64_t target_triangles, std::u
   return step;
 }
 
+ProceduralStep make_crumpling_cloth_step(std::int64_t target_triangles) {
+  if (target_triangles < 8) throw std::invalid_argument("make_crumpling_cloth_step: at least 8 triangles");
+  const int cells = std::max(
+      2, static_cast<int>(std::lround(std::sqrt(static_cast<double>(target_triangles) / 2.0))));
+  MeshData grid = make_grid(cells, cells, 1.0, 1.0);
+  ProceduralStep step;
+  step.x0 = crumpling_cloth(grid.vertices, 0.5);
+  step.x1 = crumpling_cloth(grid.vertices, 0.51);
+  step.faces = std::move(grid.faces);
+  return step;
+}
+
 }  // namespace tailor

@@ -26,4 +26,10 @@ struct ProceduralStep {
 /// (>= 200) sets the resolution; the result has about that many.
 ProceduralStep make_folded_cloth_on_sphere(std::int64_t target_triangles, std::uint64_t seed = 1);
 
+/// A contact-free step of a large deformation: a unit square grid (about `target_triangles`
+/// triangles, >= 8) crumpling from t = 0.5 to t = 0.51 (crumpling_cloth). The cloth stays
+/// a height field over the plane during the step, so it has no self-collision; it is the
+/// broad phase's stress test without contact (`tailor bench scale`, scene "cloth").
+ProceduralStep make_crumpling_cloth_step(std::int64_t target_triangles);
+
 }  // namespace tailor

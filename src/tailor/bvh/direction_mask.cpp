@@ -1,0 +1,112 @@
+#include "tailor/bvh/direction_mask.hpp"
+
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+namespace tailor {
+namespace {
+
+constexpr int kLanes = MovingTriangleBatch::kCapacity;
+
+// The 13 directions c_j (first nonzero component +1), in bit order.
+constexpr int kDirections[13][3] = {{1, 0, 0},  {0, 1, 0},  {0, 0, 1},  {1, 1, 0},  {1, -1, 0},
+                                    {1, 0, 1},  {1, 0, -1}, {0, 1, 1},  {0, 1, -1}, {1, 1, 1},
+                                    {1, 1, -1}, {1, -1, 1}, {1, -1, -1}};
+
+// Two lanes of a batch as one GCC/Clang vector: the width of SSE2, so that comparisons
+// compile to vector instructions (wider generic vectors are lowered lane by lane there).
+constexpr int kWidth = 2;
+using Lanes = double __attribute__((vector_size(sizeof(double) * kWidth)));
+using LaneBits = std::int64_t __attribute__((vector_size(sizeof(double) * kWidth)));
+
+inline Lanes load(const double* p) {
+  Lanes v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+inline Lanes abs(Lanes v) {
+  return (Lanes)((LaneBits)v & std::numeric_limits<std::int64_t>::max());
+}
+inline Lanes l1(Lanes x, Lanes y, Lanes z) {
+  return abs(x) + abs(y) + abs(z);
+}
+
+// Per lane, the mask of its triangle.
+//
+// Error analysis (the argument is in direction_mask.hpp). ñ0, m = ñX, ñ1 are the computed
+// control normals; each is within e_i (2-norm) of the exact one, with the generous bound
+// e = 2^-48·|u|₁|v|₁ per cross product of rounded differences (each component of a rounded
+// cross product is within 3·2^-53·|u|₁|v|₁ of the exact one). For d with components in
+// {-1, 0, 1} (|d|₂ <= √3 < 2):
+//   n_i·d >= ñ_i·d - 2 e_i >= m·d - |ñ_i - m|₁ - 2 e_i.
+// The computed δ = |ñ0 - m|₁ + |ñ1 - m|₁ (one rounded subtraction per component, a few
+// additions) is at least max_i |ñ_i - m|₁·(1 - 2^-50); the computed m·d (at most two
+// additions of terms bounded by |m|₁) is within 2^-51·|m|₁ of the exact m·d; underflow adds
+// at most 2^-1075 per rounding. So fl(m·d) > δ(1 + 2^-48) + 2^-50·|m|₁ + 2·(e0 + eX + e1)
+// + 2^-1060 proves n_i·d > 0 for i = 0, X, 1; the slack factors absorb the few roundings of
+// the threshold. Overflow or NaN make the threshold or the dot NaN or infinite, and every
+// comparison with it false.
+LaneBits lane_masks(const MovingTriangleBatch& batch, int first_lane) {
+  const auto& c = batch.coordinate;
+  const auto at = [&](int row) { return load(c[row] + first_lane); };
+  // u = b - a, v = c - a at t = 0 (rows 0-8) and t = 1 (rows 9-17).
+  const Lanes u0x = at(3) - at(0), u0y = at(4) - at(1), u0z = at(5) - at(2);
+  const Lanes v0x = at(6) - at(0), v0y = at(7) - at(1), v0z = at(8) - at(2);
+  const Lanes u1x = at(12) - at(9), u1y = at(13) - at(10), u1z = at(14) - at(11);
+  const Lanes v1x = at(15) - at(9), v1y = at(16) - at(10), v1z = at(17) - at(11);
+  // n0 = u0×v0, n1 = u1×v1, m = (u0×v1 + u1×v0) / 2.
+  const Lanes x = 0.5 * ((u0y * v1z - u0z * v1y) + (u1y * v0z - u1z * v0y));
+  const Lanes y = 0.5 * ((u0z * v1x - u0x * v1z) + (u1z * v0x - u1x * v0z));
+  const Lanes z = 0.5 * ((u0x * v1y - u0y * v1x) + (u1x * v0y - u1y * v0x));
+  const Lanes delta =
+      l1((u0y * v0z - u0z * v0y) - x, (u0z * v0x - u0x * v0z) - y, (u0x * v0y - u0y * v0x) - z) +
+      l1((u1y * v1z - u1z * v1y) - x, (u1z * v1x - u1x * v1z) - y, (u1x * v1y - u1y * v1x) - z);
+  // e0 + eX + e1 = 2^-48·(|u0|₁|v0|₁ + |u0|₁|v1|₁ + |u1|₁|v0|₁ + |u1|₁|v1|₁), factored.
+  const Lanes errors = 0x1p-48 * ((l1(u0x, u0y, u0z) + l1(u1x, u1y, u1z)) *
+                                  (l1(v0x, v0y, v0z) + l1(v1x, v1y, v1z)));
+  const Lanes threshold = delta * (1 + 0x1p-48) + 0x1p-50 * l1(x, y, z) + 2 * errors + 0x1p-1060;
+  const Lanes negative_threshold = -threshold;
+  // Dot products in the order of kDirections, each as at most two additions.
+  const Lanes xy = x + y, x_y = x - y;
+  const Lanes dots[13] = {x,      y,      z,       xy,       x_y,      x + z,   x - z,
+                          y + z,  y - z,  xy + z,  xy - z,   x_y + z,  x_y - z};
+  LaneBits mask = {};
+  for (int j = 0; j < 13; ++j) {
+    mask |= (dots[j] > threshold) & (std::int64_t{1} << (2 * j));
+    mask |= (dots[j] < negative_threshold) & (std::int64_t{1} << (2 * j + 1));
+  }
+  return mask;
+}
+
+}  // namespace
+
+Vec3 mask_direction(int k) {
+  const int* c = kDirections[k / 2];
+  const double sign = (k % 2 == 0) ? 1.0 : -1.0;
+  return sign * Vec3(c[0], c[1], c[2]);
+}
+
+Vec3 first_mask_direction(DirectionMask mask) {
+  const Vec3 d = mask_direction(__builtin_ctz(mask));
+  return d / d.norm();
+}
+
+DirectionMask direction_mask(const MovingTriangleBatch& batch) {
+  if (batch.count == 0) return kAllDirections;
+  LaneBits masks = lane_masks(batch, 0);
+  for (int first = kWidth; first < kLanes; first += kWidth) masks &= lane_masks(batch, first);
+  std::int64_t all = kAllDirections;
+  for (int i = 0; i < kWidth; ++i) all &= masks[i];
+  return static_cast<DirectionMask>(all);
+}
+
+DirectionMask direction_mask(const Vec3& a0, const Vec3& b0, const Vec3& c0, const Vec3& a1,
+                             const Vec3& b1, const Vec3& c1) {
+  MovingTriangleBatch batch;
+  batch.add(a0.data(), b0.data(), c0.data(), a1.data(), b1.data(), c1.data());
+  batch.pad();
+  return direction_mask(batch);
+}
+
+}  // namespace tailor

@@ -1,0 +1,130 @@
+// Direction masks: every bit they set is true for the whole step (checked exactly: n(t)·d is
+// a quadratic in t with rational coefficients, positive on [0, 1] or not), on random,
+// near-degenerate, tiny and huge triangles; and they are not vacuous (a static triangle
+// gets every direction clearly on its side).
+
+#include "support/sanitized.hpp"
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <random>
+
+#include "tailor/bvh/direction_mask.hpp"
+
+namespace tailor {
+namespace {
+
+using Q3 = std::array<mpq_class, 3>;
+
+Q3 exact(const Vec3& v) {
+  return {mpq_class(v[0]), mpq_class(v[1]), mpq_class(v[2])};
+}
+Q3 minus(const Q3& a, const Q3& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+Q3 cross(const Q3& u, const Q3& v) {
+  return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+}
+mpq_class dot(const Q3& a, const Vec3& d) {
+  return a[0] * d[0] + a[1] * d[1] + a[2] * d[2];
+}
+
+// Whether n(t)·d > 0 for every t in [0, 1], exactly: q(t) = n(t)·d in Bernstein form
+// (c0, cX, c1) is the quadratic c0 (1-t)² + 2 cX t(1-t) + c1 t².
+bool positive_over_step(const std::array<Vec3, 6>& corners, const Vec3& d) {
+  const Q3 a0 = exact(corners[0]), b0 = exact(corners[1]), c0 = exact(corners[2]);
+  const Q3 a1 = exact(corners[3]), b1 = exact(corners[4]), c1 = exact(corners[5]);
+  const Q3 u0 = minus(b0, a0), v0 = minus(c0, a0), u1 = minus(b1, a1), v1 = minus(c1, a1);
+  const mpq_class q0 = dot(cross(u0, v0), d), q1 = dot(cross(u1, v1), d);
+  const Q3 m1 = cross(u0, v1), m2 = cross(u1, v0);
+  const mpq_class qx = (dot(m1, d) + dot(m2, d)) / 2;
+  if (q0 <= 0 || q1 <= 0) return false;
+  // Power form: q(t) = q0 + 2(qx - q0) t + (q0 - 2qx + q1) t².
+  const mpq_class a = q0 - 2 * qx + q1, b = 2 * (qx - q0);
+  if (a <= 0) return true;  // concave or linear: the minimum is at an end
+  const mpq_class vertex = -b / (2 * a);
+  if (vertex <= 0 || vertex >= 1) return true;
+  return q0 + b * vertex + a * vertex * vertex > 0;
+}
+
+::testing::AssertionResult mask_is_true(const std::array<Vec3, 6>& c) {
+  const DirectionMask mask = direction_mask(c[0], c[1], c[2], c[3], c[4], c[5]);
+  for (int bit = 0; bit < kMaskDirections; ++bit) {
+    if ((mask >> bit & 1) && !positive_over_step(c, mask_direction(bit))) {
+      return ::testing::AssertionFailure() << "bit " << bit << " is set but false";
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+
+TEST(DirectionMask, EveryDirectionItHoldsIsTrueOverTheWholeStep) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  const int trials = tailor::testing::sanitized() ? 3000 : 30000;
+  int bits_set = 0;
+  for (int trial = 0; trial < trials; ++trial) {
+    const int kind = trial % 5;
+    // Scales from underflowing to near-overflowing products, and motions from none to
+    // large (the normal may turn through more than 90 degrees).
+    const double scale = std::ldexp(1.0, std::array{0, -500, 480, -1000, 20}[kind]);
+    const double motion = std::array{1e-3, 0.5, 2.0, 1e-9, 0.0}[trial / 5 % 5];
+    std::array<Vec3, 6> c;
+    for (int k = 0; k < 3; ++k) c[k] = scale * Vec3(uniform(rng), uniform(rng), uniform(rng));
+    for (int k = 0; k < 3; ++k) {
+      c[3 + k] = c[k] + motion * scale * Vec3(uniform(rng), uniform(rng), uniform(rng));
+    }
+    if (trial % 7 == 0) c[2] = c[0] + 1e-12 * (c[1] - c[0]);  // nearly degenerate at t = 0
+    ASSERT_TRUE(mask_is_true(c)) << "trial " << trial;
+    bits_set += __builtin_popcount(direction_mask(c[0], c[1], c[2], c[3], c[4], c[5]));
+  }
+  EXPECT_GT(bits_set, trials);  // not vacuous
+}
+
+TEST(DirectionMask, StaticTriangleHoldsEveryDirectionClearlyOnItsSide) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Vec3 a(uniform(rng), uniform(rng), uniform(rng));
+    const Vec3 b(uniform(rng), uniform(rng), uniform(rng));
+    const Vec3 c(uniform(rng), uniform(rng), uniform(rng));
+    const Vec3 n = (b - a).cross(c - a);
+    const DirectionMask mask = direction_mask(a, b, c, a, b, c);
+    for (int bit = 0; bit < kMaskDirections; ++bit) {
+      const Vec3 d = mask_direction(bit);
+      const double cosine = n.dot(d) / (n.norm() * d.norm());
+      if (cosine > 1e-9) {
+        EXPECT_TRUE(mask >> bit & 1) << trial << " bit " << bit;
+      } else if (cosine <= 0) {
+        EXPECT_FALSE(mask >> bit & 1) << trial << " bit " << bit;
+      }
+    }
+  }
+}
+
+TEST(DirectionMask, DegenerateOverflowingOrBatchedTrianglesAreHandled) {
+  const Vec3 zero = Vec3::Zero(), x = Vec3::UnitX(), y = Vec3::UnitY();
+  // A degenerate triangle has no normal: no direction.
+  EXPECT_EQ(direction_mask(zero, x, 2 * x, zero, x, 2 * x), 0u);
+  // Products that overflow: no direction (never a wrong one).
+  const double huge = 1e300;
+  EXPECT_EQ(direction_mask(zero, huge * x, huge * y, zero, huge * x, huge * y), 0u);
+  // The triangle in the xy plane facing +z holds +z (bit 4), not -z (bit 5).
+  const DirectionMask up = direction_mask(zero, x, y, zero, x, y);
+  EXPECT_TRUE(up >> 4 & 1);
+  EXPECT_FALSE(up >> 5 & 1);
+  EXPECT_EQ(first_mask_direction(DirectionMask{1} << 4), Vec3(0, 0, 1));
+  // A batch is the and of its triangles: +z and -z together leave nothing about z.
+  MovingTriangleBatch batch;
+  batch.add(zero.data(), x.data(), y.data(), zero.data(), x.data(), y.data());
+  batch.add(zero.data(), y.data(), x.data(), zero.data(), y.data(), x.data());
+  batch.pad();
+  const DirectionMask both = direction_mask(batch);
+  EXPECT_FALSE(both >> 4 & 1);
+  EXPECT_FALSE(both >> 5 & 1);
+  EXPECT_EQ(both, up & direction_mask(zero, y, x, zero, y, x));
+}
+
+}  // namespace
+}  // namespace tailor
