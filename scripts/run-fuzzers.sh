@@ -5,7 +5,9 @@
 # found (build/fuzz/corpus/TARGET, kept between runs), JOBS targets at a time. Prints one
 # line per target (executions, coverage, new corpus entries) and exits 1 if any target
 # found a crash, a sanitizer error, a leak, a timeout or an out-of-memory (the input is
-# saved in build/fuzz/artifacts/TARGET/).
+# saved in build/fuzz/artifacts/TARGET/). FUZZ_TIMEOUT (default 10) is the wall-clock
+# seconds one input may take; raise it when the fuzzers run at low priority beside other
+# work, where a starved process can exceed it without any slow input.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -16,12 +18,12 @@ build=build/fuzz
 mkdir -p "$build/logs"
 
 run_one() {
-  local target=$1 seconds=$2 build=$3
+  local target=$1 seconds=$2 build=$3 timeout=${FUZZ_TIMEOUT:-10}
   local binary="$build/fuzz/fuzz_$target"
   local corpus="$build/corpus/$target" artifacts="$build/artifacts/$target/"
   local dict="fuzz/dict/$target.dict"
   mkdir -p "$corpus" "$artifacts"
-  local options=(-max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=4096
+  local options=(-max_total_time="$seconds" -timeout="$timeout" -rss_limit_mb=2048 -max_len=4096
                  -print_final_stats=1 -artifact_prefix="$artifacts")
   [ -f "$dict" ] && options+=(-dict="$dict")
   if "$binary" "${options[@]}" "$corpus" "fuzz/corpus/$target" >"$build/logs/$target.log" 2>&1; then

@@ -67,6 +67,26 @@ TEST(StrainLimiter, PulledStripEndsWithinTheLimitAndPinsStay) {
   EXPECT_EQ(x.row(n), pinned_before.row(n));
 }
 
+TEST(StrainLimiter, OverRelaxedCorrectionsNeverShortenAnEdgeBelowItsRestLength) {
+  // A straight chain pulled to twice its length from a pinned end: the first sweeps are
+  // over-relaxed (strain far above the limit); no edge along the chain may end up
+  // shorter than at rest, and every edge ends within the limit.
+  const int n = 12;
+  const Strip s = make_strip(n, 0.01);
+  const StrainLimiter limiter(*s.mesh, s.rest, masses_with_pins(2 * n, {0, n}), 0.025);
+  Positions x = s.rest;
+  x.col(0) *= 2.0;
+  const StrainLimitStats stats = limiter.apply(x, 10000);
+  EXPECT_GT(stats.max_strain_before, 0.9);
+  EXPECT_LE(stats.max_strain_after, 0.025 + 1e-9);
+  for (int row : {0, n}) {
+    for (int i = 0; i + 1 < n; ++i) {
+      const double length = (x.row(row + i + 1) - x.row(row + i)).norm();
+      EXPECT_GE(length, 0.01 * (1 - 1e-12)) << "edge " << row + i;
+    }
+  }
+}
+
 TEST(StrainLimiter, LeavesStatesWithinTheLimitAndCompressionAlone) {
   const Strip s = make_strip(6, 0.01);
   const StrainLimiter limiter(*s.mesh, s.rest, masses_with_pins(12, {0}), 0.05);

@@ -74,7 +74,8 @@ struct SelfCollisionDetector::Impl {
     const TraversalOptions options{config.normal_cones, config.contour_test,
                                    config.adjacency_culling};
     traversal.self(bvh, contours, {x0, x1}, options);
-    if (use_radial_view) {
+    // Radial view only removes candidates: with none, its classification would be wasted.
+    if (use_radial_view && traversal.size() > 0) {
       // Clean faces matter only where candidates may share a vertex (radial_view_culling.hpp).
       const RadialViewCounts counts = radial.classify(x0, x1, !config.adjacency_culling);
       traversal.remove_if(

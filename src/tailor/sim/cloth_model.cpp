@@ -1,12 +1,11 @@
 /// @file
-/// Implicit cloth: element energies, a fixed-pattern sparse system, sparse Cholesky or CG.
+/// Implicit cloth: element energies and a fixed-pattern sparse system (solved by
+/// ClothLinearSolver).
 
 #include "tailor/sim/cloth_model.hpp"
 
 #include <fmt/format.h>
 
-#include <Eigen/IterativeLinearSolvers>
-#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -15,12 +14,11 @@
 #include <numbers>
 
 #include "tailor/geometry/error.hpp"
-#include "tailor/sim/block_jacobi.hpp"
 
 namespace tailor {
 namespace {
 
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+using SparseMatrix = ClothLinearSolver::SparseMatrix;
 using Mat3 = Eigen::Matrix3d;
 
 /// Rest data of one face: area and the coefficients giving w_u, w_v from its vertices.
@@ -93,18 +91,8 @@ struct ClothModel::Impl {
   std::vector<int> pinned_zero_index;  // entries in pinned rows or columns (diagonal excluded)
   bool pinned_dirty = true;
 
-  // Simplicial sparse LDLᵀ (Eigen, AMD ordering): the symbolic analysis is done once per
-  // topology, since contacts only change diagonal blocks of the fixed pattern; each step
-  // refactorises numerically. Measured (elbow, one thread, ms per substep) against CHOLMOD
-  // with Debian's reference BLAS: Eigen LLᵀ 2.5 vs CHOLMOD supernodal 5.3 and simplicial 3.0
-  // on the default 2,079 unknowns, 108 vs 128 and 162 on the 10x sleeve's 20,790; LDLᵀ
-  // (no square roots) about 10 % below LLᵀ.
-  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> cholesky;
-  bool cholesky_analyzed = false;
-  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, BlockJacobi> cg;
-  Eigen::VectorXd last_dv;
-  ClothSolver solver = ClothSolver::automatic;
-  double cg_tolerance = 1e-6;
+  ClothLinearSolver linear_solver;
+  Eigen::VectorXd last_dv;  // the previous step's solution: the iterative solvers' warm start
 
   /// Offset of block row I inside block column J (identical in its three columns).
   int block_offset(Index I, Index J) const {
@@ -349,8 +337,7 @@ const std::vector<Index>& ClothModel::pinned() const {
 }
 
 void ClothModel::set_solver(ClothSolver solver, double cg_tolerance) {
-  m_impl->solver = solver;
-  m_impl->cg_tolerance = cg_tolerance;
+  m_impl->linear_solver.set_method(solver, cg_tolerance);
 }
 
 void ClothModel::set_pinned(std::vector<Index> vertices) {
@@ -484,27 +471,11 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0,
   ClothStepInfo info;
   info.assemble_ms = ms_since(start);
   const auto solve_start = Clock::now();
-  Eigen::VectorXd dv;
-  const bool direct = m.solver == ClothSolver::direct ||
-                      (m.solver == ClothSolver::automatic && n <= kDirectSolveLimit);
-  if (direct) {
-    if (!m.cholesky_analyzed) {
-      m.cholesky.analyzePattern(A);
-      m.cholesky_analyzed = true;
-    }
-    m.cholesky.factorize(A);
-    // LDLᵀ also factorises indefinite matrices: positive pivots certify A is SPD.
-    info.ok = m.cholesky.info() == Eigen::Success && m.cholesky.vectorD().minCoeff() > 0;
-    if (info.ok) dv = m.cholesky.solve(b);
-  } else {
-    info.direct = false;
-    m.cg.setTolerance(m.cg_tolerance);
-    m.cg.setMaxIterations(1000);
-    m.cg.compute(A);
-    dv = m.cg.solveWithGuess(b, m.last_dv);
-    info.iterations = static_cast<int>(m.cg.iterations());
-    info.ok = m.cg.info() == Eigen::Success || m.cg.info() == Eigen::NoConvergence;
-  }
+  Eigen::VectorXd dv = m.last_dv;
+  const LinearSolveInfo solve = m.linear_solver.solve(A, b, dv);
+  info.direct = solve.factorized;
+  info.iterations = solve.iterations;
+  info.ok = solve.ok;
   if (info.ok) info.ok = dv.allFinite();
   info.solve_ms = ms_since(solve_start);
   if (info.ok) {

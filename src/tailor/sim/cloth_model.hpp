@@ -16,6 +16,7 @@
 #include "tailor/geometry/types.hpp"
 #include "tailor/mesh/triangle_mesh.hpp"
 #include "tailor/scene/cloth_material.hpp"
+#include "tailor/sim/cloth_linear_solver.hpp"
 
 namespace tailor {
 
@@ -62,13 +63,6 @@ struct ContactPlane {
   }
 };
 
-/// Linear solver of the implicit step.
-enum class ClothSolver {
-  automatic,  ///< direct up to ClothModel::kDirectSolveLimit unknowns, else iterative
-  direct,     ///< sparse simplicial LDLᵀ Cholesky, Eigen (exact)
-  iterative,  ///< conjugate gradient, block-Jacobi preconditioner, warm-started
-};
-
 /// What one implicit step did.
 struct ClothStepInfo {
   bool direct = true;      ///< sparse Cholesky (true) or conjugate gradient (false)
@@ -82,9 +76,6 @@ struct ClothStepInfo {
 /// Implicit cloth model on a fixed mesh.
 class ClothModel {
  public:
-  /// Systems with at most this many unknowns use sparse Cholesky, larger ones CG.
-  static constexpr Index kDirectSolveLimit = 60000;
-
   /// `rest` gives rest lengths, angles and areas. `warp` (one row per face, optional)
   /// is the warp direction of each face; without it, each face's first edge.
   /// Throws InputError on a non-positive density or negative stiffness, or a
@@ -103,7 +94,7 @@ class ClothModel {
   void set_pinned(std::vector<Index> vertices);
   /// The pinned vertices, sorted.
   const std::vector<Index>& pinned() const;
-  /// Chooses the linear solver and, for CG, the relative residual to reach.
+  /// Chooses the linear solver and, for block-Jacobi CG, the relative residual to reach.
   void set_solver(ClothSolver solver, double cg_tolerance = 1e-6);
 
   /// One linearised implicit Euler step of length `h` from (x0, v0): writes the

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <numeric>
 
 #include "tailor/geometry/error.hpp"
@@ -108,7 +109,8 @@ StrainLimiter::StrainLimiter(const TriangleMesh& mesh, const Positions& rest,
   }
 }
 
-double StrainLimiter::sweep(Positions& x, bool forward, std::int64_t& corrections) const {
+double StrainLimiter::sweep(Positions& x, bool forward, double relaxation,
+                            std::int64_t& corrections) const {
   // Squared lengths first: most edges are within the limit and need no square root.
   double worst_squared = 0;  // largest (length / rest length)²
   double* p = x.data();      // row-major: vertex v at p[3 v .. 3 v + 2]
@@ -122,8 +124,11 @@ double StrainLimiter::sweep(Positions& x, bool forward, std::int64_t& correction
     const double l2 = dx * dx + dy * dy + dz * dz;
     worst_squared = std::max(worst_squared, l2 * m_inverse_rest_squared[i]);
     if (!(l2 > m_limit_squared[i])) continue;
+    // `relaxation` > 1 removes more than the excess over the limit, but the edge never
+    // becomes shorter than at rest (see apply()).
     const double l = std::sqrt(l2);
-    const double s = (l - (1 + m_max_strain) * m_rest_length[i]) / l;
+    const double excess = l - (1 + m_max_strain) * m_rest_length[i];
+    const double s = std::min(relaxation * excess, l - m_rest_length[i]) / l;
     const double wa = m_weight0[i] * s, wb = (1 - m_weight0[i]) * s;
     pa[0] += wa * dx;
     pa[1] += wa * dy;
@@ -140,9 +145,19 @@ StrainLimitStats StrainLimiter::apply(Positions& x, int max_sweeps,
                                       const Constraint& constraint) const {
   StrainLimitStats stats;
   const double tolerance = 1e-9;
+  // Over-relaxed sweeps while the worst strain is far above the limit: the constraint is
+  // an inequality, so a length below the limit is as valid as one at it, and the
+  // overshoot leaves room for the constraint that follows each sweep (plain projections
+  // to the limit take hundreds of alternating sweeps where the twisted sleeve presses on
+  // the arm). Near the limit, plain projections, which reach a state that neither the
+  // limiter nor the constraint changes.
+  double last_worst = std::numeric_limits<double>::infinity();
   for (int s = 0; s < max_sweeps; ++s) {
     const std::int64_t before = stats.corrections;
-    const double worst = sweep(x, s % 2 == 0, stats.corrections);
+    const double relaxation =
+        last_worst > kOverRelaxedAbove * m_max_strain ? kOverRelaxation : 1.0;
+    const double worst = sweep(x, s % 2 == 0, relaxation, stats.corrections);
+    last_worst = worst;
     if (s == 0) stats.max_strain_before = worst;
     ++stats.sweeps;
     const std::int64_t moved = constraint ? constraint(x) : 0;

@@ -50,6 +50,12 @@ class StrainLimiter {
   StrainLimiter(const TriangleMesh& mesh, const Positions& rest, const Eigen::VectorXd& masses,
                 double max_strain);
 
+  /// While the worst strain exceeds kOverRelaxedAbove times the limit, corrections remove
+  /// kOverRelaxation times an edge's excess (successive over-relaxation; never shorter
+  /// than the rest length).
+  static constexpr double kOverRelaxation = 1.5;
+  static constexpr double kOverRelaxedAbove = 1.2;
+
   /// The strain limit.
   double max_strain() const { return m_max_strain; }
 
@@ -65,7 +71,7 @@ class StrainLimiter {
                          const Constraint& constraint = {}) const;
 
  private:
-  double sweep(Positions& x, bool forward, std::int64_t& corrections) const;
+  double sweep(Positions& x, bool forward, double relaxation, std::int64_t& corrections) const;
 
   std::vector<std::array<Index, 2>> m_edges;   // in sweep order
   std::vector<double> m_rest_length;           // per m_edges entry
