@@ -90,9 +90,7 @@ struct ContourBuilder {
 
 NodeContours::NodeContours(const TriangleMesh& mesh, const MeshBvh& bvh) {
   const Index n = bvh.num_nodes();
-  m_slot.resize(static_cast<std::size_t>(n));
-  for (Index node = 0; node < n; ++node)
-    m_slot[node] = bvh.has_mask(node) ? bvh.mask_index(node) : -1;
+  m_bvh = &bvh;
   m_loop_start.assign(static_cast<std::size_t>(bvh.num_masks()), 0);
   m_loop_length.assign(static_cast<std::size_t>(bvh.num_masks()), 0);
   if (n == 0) return;

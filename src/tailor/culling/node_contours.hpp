@@ -20,6 +20,7 @@ namespace tailor {
 class NodeContours {
  public:
   NodeContours() = default;
+  /// Built for `bvh`, which must outlive the contours (they use its mask indices).
   NodeContours(const TriangleMesh& mesh, const MeshBvh& bvh);
 
   /// True when the node keeps a mask and its faces have exactly one consistently oriented
@@ -27,8 +28,8 @@ class NodeContours {
   bool has_single_loop(Index node) const { return !loop(node).empty(); }
   /// Vertices of the node's boundary loop in walking order (empty if none).
   std::span<const Index> loop(Index node) const {
-    const Index slot = m_slot[node];
-    if (slot < 0) return {};
+    if (m_bvh == nullptr || !m_bvh->has_mask(node)) return {};
+    const Index slot = m_bvh->mask_index(node);
     return {m_loop_vertices.data() + m_loop_start[slot],
             static_cast<std::size_t>(m_loop_length[slot])};
   }
@@ -36,7 +37,7 @@ class NodeContours {
   std::size_t stored_vertices() const { return m_loop_vertices.size(); }
 
  private:
-  std::vector<Index> m_slot;               // node -> its MeshBvh mask index, or -1
+  const MeshBvh* m_bvh = nullptr;
   std::vector<std::int64_t> m_loop_start;  // per mask index
   std::vector<Index> m_loop_length;        // per mask index (0: no single loop)
   std::vector<Index> m_loop_vertices;
