@@ -156,6 +156,26 @@ std::vector<BvhCase> bvh_cases() {
   return cases;
 }
 
+TEST(MeshBvh, OneAndTwoFaceMeshesRefit) {
+  // A lone face is a group without inner nodes (this once indexed an empty list).
+  for (int faces : {1, 2}) {
+    Positions x0(4, 3);
+    x0 << 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0;
+    FaceArray f(faces, 3);
+    f.row(0) << 0, 1, 2;
+    if (faces == 2) f.row(1) << 1, 3, 2;
+    const TriangleMesh mesh(4, f);
+    MeshBvh bvh(mesh, x0);
+    const Positions x1 = x0.array() + 0.5;
+    bvh.refit(x0, x1, true);
+    ASSERT_EQ(bvh.num_nodes(), 2 * faces - 1);
+    for (Index v = 0; v < (faces == 1 ? 3 : 4); ++v) {
+      EXPECT_TRUE(box_holds(bvh.box(0), x0, v) && box_holds(bvh.box(0), x1, v)) << faces;
+    }
+    EXPECT_TRUE(bvh.direction_mask(0) >> 4 & 1) << faces;  // both face +z
+  }
+}
+
 TEST(MeshBvh, RefitBoxesHoldTheSweptTrianglesAndMasksHoldEveryNormal) {
   for (const BvhCase& c : bvh_cases()) {
     const TriangleMesh mesh(static_cast<Index>(c.mesh.vertices.rows()), c.mesh.faces);

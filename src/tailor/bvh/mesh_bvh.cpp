@@ -165,7 +165,7 @@ void MeshBvh::refit_group(const Group& group, const Positions& x0, const Positio
   const double* p1 = x1.data();
   MovingTriangleBatch batch;
   // Leaf boxes straight from the corners (leaves in increasing id order), rounded outward.
-  const Index* leaf_node = &m_group_leaf_nodes[group.first_leaf];
+  const Index* leaf_node = m_group_leaf_nodes.data() + group.first_leaf;
   for (Index l = 0; l < count; ++l) {
     const auto& v = m_leaf_vertices[group.first_leaf + l];
     const double* corner[6] = {p0 + 3 * v[0], p0 + 3 * v[1], p0 + 3 * v[2],
@@ -183,7 +183,8 @@ void MeshBvh::refit_group(const Group& group, const Positions& x0, const Positio
     if (with_directions) batch.add(corner[0], corner[1], corner[2], corner[3], corner[4], corner[5]);
   }
   // The group's inner nodes, children first.
-  const Index* inner = &m_group_inner_nodes[group.first_leaf - group.index];
+  // (A one-face group has no inner node, and the list may be empty: no indexing.)
+  const Index* inner = m_group_inner_nodes.data() + (group.first_leaf - group.index);
   for (Index i = count - 2; i >= 0; --i) {
     Node& record = m_nodes[inner[i]];
     record.box = m_nodes[inner[i] + 1].box;
