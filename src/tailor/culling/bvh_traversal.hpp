@@ -22,7 +22,8 @@ namespace tailor {
 
 /// Which high-level stages the traversal applies.
 struct TraversalOptions {
-  bool normal_cones = true;       ///< skip a node whose cone is under 90° (and contour passes)
+  bool normal_cones = true;       ///< skip a node whose normals are within 90° of a direction
+                                  ///< of its mask (direction_mask.hpp) and whose contour passes
   bool contour_test = true;       ///< require the contour test before a cone skips a node
   bool adjacency_culling = true;  ///< never emit triangle pairs that share a vertex
 };

@@ -10,7 +10,7 @@ namespace tailor {
 
 /// Switches for every culling stage. Every combination reports the same collisions.
 struct DetectionConfig {
-  bool normal_cones = true;  ///< skip nodes certified by continuous normal cones
+  bool normal_cones = true;  ///< skip nodes certified by continuous normal bounds (direction masks)
   bool contour_test = true;  ///< require the contour test for cone culling (never off by default)
   bool adjacency_culling =
       true;  ///< never emit triangle pairs sharing a vertex; use the isolated set

@@ -12,7 +12,7 @@ struct DetectionStats {
   // High level.
   std::int64_t node_pairs_visited = 0;        ///< BVH node pairs whose boxes were tested
   std::int64_t nodes_culled_by_cones = 0;     ///< nodes whose self-test the normal cone skipped
-  std::int64_t contour_tests = 0;             ///< contour tests run (cone was under 90°)
+  std::int64_t contour_tests = 0;             ///< contour tests run (the node's mask was not empty)
   std::int64_t contour_tests_failed = 0;      ///< contour tests that could not certify
   std::int64_t clusters_certified = 0;        ///< radial-view clusters skipped whole
   std::int64_t radial_positive = 0;           ///< radial view: triangles (real + ghost) facing
