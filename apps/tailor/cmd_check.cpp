@@ -33,7 +33,7 @@ struct CheckArgs {
   std::string obstacle, json_lines_path, observers_path;
   std::optional<Index> from, to;
   bool no_frame_check = false;
-  int read_ahead = 2;
+  int read_ahead = SequenceCheckOptions::kAutoReadAhead;
   std::size_t max_pairs = 10;
   DetectionOptions detection;
 };
@@ -255,9 +255,9 @@ const CommandRegistration registration{
                         "Skip the static intersection check of every frame (steps only)");
       command
           ->add_option("--read-ahead", args->read_ahead,
-                       "Frames read ahead on a second thread (0: read between steps)")
-          ->check(CLI::Range(0, 64))
-          ->capture_default_str();
+                       "Frames read ahead on a second thread (0: read between steps; default: "
+                       "as many as fit in 64 MiB, 2 to 64)")
+          ->check(CLI::Range(0, 64));
       command
           ->add_option("--max-pairs", args->max_pairs, "Intersecting face pairs listed per frame")
           ->check(CLI::Range(0, 1000000))

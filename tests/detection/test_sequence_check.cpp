@@ -173,7 +173,9 @@ TEST(SequenceCheck, FallingFoldEveryStepEqualsBruteForce) {
   TempDir dir;
   const ProceduralSequence s = make_falling_fold(small_fold());
   write_sequence(dir.path(), s, "fold_{}.ply");
-  for (int read_ahead : {0, 2}) expect_known_answers(s, dir.path(), read_ahead);
+  for (int read_ahead : {0, 2, SequenceCheckOptions::kAutoReadAhead}) {
+    expect_known_answers(s, dir.path(), read_ahead);
+  }
 }
 
 TEST(SequenceCheck, ExactlyDegenerateFoldEqualsBruteForce) {
@@ -290,6 +292,35 @@ TEST(SequenceCheck, ObstacleStillOrMovingWithTheFrames) {
        fmt::format("sequence has {}", s.frames.size())});
 }
 
+TEST(SequenceCheck, ObstacleFramesAreReadOnlyForTheFrameCheck) {
+  TempDir dir;
+  const ProceduralSequence s = make_falling_fold(small_fold(6));
+  const std::filesystem::path cloth = dir / "cloth";
+  const std::filesystem::path floor = dir / "floor";
+  for (const auto& folder : {cloth, floor}) std::filesystem::create_directories(folder);
+  write_sequence(cloth, s, "c_{}.ply");
+  const MeshData below = floor_at(-0.01);
+  for (std::size_t k = 0; k < s.frames.size(); ++k) {
+    write_mesh(floor / fmt::format("floor_{}.obj", k), below.vertices, below.faces);
+  }
+  test::write_bytes(floor / "floor_3.obj", "not an obj file\n");
+
+  // Without the static check nothing looks at the obstacle: its frames are not read.
+  SequenceCheckOptions steps_only;
+  steps_only.check_frames = false;
+  const SequenceSummary summary =
+      check_sequence(FrameSequence{cloth}, FrameSequence{floor}, steps_only, nullptr);
+  EXPECT_EQ(summary.steps, static_cast<Index>(s.frames.size()) - 1);
+
+  SequenceChecker checked(FrameSequence{cloth}, FrameSequence{floor});
+  expect_contains(input_error_message([&] {
+                    while (checked.next_step()) {
+                    }
+                  }),
+                  {"floor_3.obj", "unknown statement"});
+  EXPECT_EQ(checked.summary().steps, 2);
+}
+
 TEST(SequenceCheck, MismatchedFrameStopsThereNamingIt) {
   TempDir dir;
   ProceduralSequence s = make_falling_fold(small_fold());
@@ -298,7 +329,7 @@ TEST(SequenceCheck, MismatchedFrameStopsThereNamingIt) {
   FaceArray flipped = s.faces;
   flipped.row(3) << s.faces(3, 0), s.faces(3, 2), s.faces(3, 1);
   write_mesh(paths[4], s.frames[4], flipped);
-  for (int read_ahead : {0, 2}) {
+  for (int read_ahead : {0, 2, SequenceCheckOptions::kAutoReadAhead}) {
     SequenceCheckOptions options;
     options.read_ahead = read_ahead;
     SequenceChecker checker(FrameSequence(dir.path()), std::nullopt, options);

@@ -5,7 +5,10 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <optional>
+#include <random>
+#include <thread>
 #include <vector>
 
 #include "io_test_support.hpp"
@@ -54,6 +57,32 @@ TEST(FramePrefetch, HandsOutEveryFrameInOrder) {
       EXPECT_FALSE(prefetcher.next().has_value());
       EXPECT_EQ(prefetcher.next_index(), last + 1);
       EXPECT_GE(prefetcher.wait_ms(), 0.0);
+    }
+  }
+}
+
+TEST(FramePrefetch, EveryFrameIntactWhateverThePaceOfTheConsumer) {
+  // The consumer takes frames in bursts and pauses, so the ring runs full, half empty and
+  // empty while the reader reads, pauses or is hurried: no frame may be lost, repeated or
+  // overwritten before it was taken.
+  TempDir dir;
+  constexpr int kFrames = 60;
+  write_frames(dir, kFrames);
+  const FrameSequence frames(dir.path());
+  std::mt19937 rng(18);
+  for (int read_ahead : {1, 2, 3, 4, 7, 64}) {
+    for (int round = 0; round < 2; ++round) {
+      FramePrefetcher prefetcher(frames, 0, kFrames - 1, read_ahead);
+      for (Index i = 0; i < kFrames; ++i) {
+        const std::optional<Positions> x = prefetcher.next();
+        ASSERT_TRUE(x.has_value()) << "frame " << i << ", read ahead " << read_ahead;
+        ASSERT_EQ(*x, numbered_frame(i).vertices) << "frame " << i << ", read ahead " << read_ahead;
+        const int pace = std::uniform_int_distribution<int>(0, 9)(rng);
+        if (pace >= 7) {
+          std::this_thread::sleep_for(std::chrono::microseconds(pace == 9 ? 3000 : 200));
+        }
+      }
+      EXPECT_FALSE(prefetcher.next().has_value());
     }
   }
 }

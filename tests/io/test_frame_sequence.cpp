@@ -94,6 +94,18 @@ TEST(FrameSequence, DifferentFacesIsAnError) {
                   {"2.obj", "faces differ", "1.obj", "face 1"});
 }
 
+TEST(FrameSequence, ObjFramesWithTheFirstFramesFacesWrittenOtherwiseOrAsPly) {
+  // Frames whose text after the vertices is not the first frame's are parsed in full.
+  TempDir dir;
+  write_frame(dir / "0.obj", frame(0));
+  write_bytes(dir / "1.obj", "v 1 0 -1\nv 2 1 -1\nv 3 4 -1\nv 4 9 -1\nf 1/1 2/1 3/1\nf 1 3 4\n");
+  write_frame(dir / "2.ply", frame(2));
+  write_frame(dir / "3.obj", frame(3));
+  const FrameSequence frames(dir.path());
+  ASSERT_EQ(frames.num_frames(), 4);
+  for (Index i = 0; i < 4; ++i) EXPECT_EQ(frames.load(i), frame(i).vertices) << "frame " << i;
+}
+
 TEST(FrameSequence, ReferenceClothFunnelFrames) {
   const std::filesystem::path folder =
       std::filesystem::path(TAILOR_DATA_DIR) / "cloth-funnel/frames";

@@ -32,6 +32,16 @@ Index resolve_last_frame(const FrameSequence& frames, const SequenceCheckOptions
   return last;
 }
 
+/// The read ahead of one sequence's reader: `options.read_ahead`, or the automatic depth
+/// for frames of `num_vertices` vertices.
+int resolve_read_ahead(const SequenceCheckOptions& options, Index num_vertices) {
+  if (options.read_ahead != SequenceCheckOptions::kAutoReadAhead) return options.read_ahead;
+  const std::size_t frame_bytes = sizeof(double) * 3 * static_cast<std::size_t>(num_vertices) + 1;
+  const std::size_t fit = SequenceCheckOptions::kAutoReadAheadBytes / frame_bytes;
+  const std::size_t deepest = SequenceCheckOptions::kMaxAutoReadAhead;
+  return static_cast<int>(std::clamp<std::size_t>(fit, 2, deepest));
+}
+
 void check_obstacle_count(const FrameSequence& frames, const FrameSequence& obstacle) {
   if (obstacle.num_frames() != 1 && obstacle.num_frames() != frames.num_frames()) {
     throw InputError(
@@ -62,9 +72,9 @@ struct SequenceChecker::Impl {
   TriangleMesh mesh;
   std::optional<TriangleMesh> obstacle_mesh;
   FramePrefetcher cloth_reader;
-  std::optional<FramePrefetcher> obstacle_reader;  // none for a still obstacle
+  std::optional<FramePrefetcher> obstacle_reader;  // none: still obstacle, or no frame check
   Positions x;                                     // cloth at the current frame
-  Positions y;                                     // obstacle at the current frame
+  Positions y;                                     // obstacle at the current frame (if read)
   std::optional<SelfCollisionDetector> detector;
   FrameCheck first;          // static check of the first frame
   FrameCheck current;        // static check of the current frame
@@ -78,14 +88,17 @@ struct SequenceChecker::Impl {
         options(std::move(options_in)),
         last(validate(frames, obstacle, options)),
         mesh(frames.num_vertices(), frames.faces()),
-        cloth_reader(frames, options.first_frame, last, options.read_ahead) {
+        cloth_reader(frames, options.first_frame, last,
+                     resolve_read_ahead(options, frames.num_vertices())) {
     const auto start = Clock::now();
-    if (obstacle) {
-      obstacle_mesh.emplace(obstacle->num_vertices(), obstacle->faces());
+    if (obstacle) obstacle_mesh.emplace(obstacle->num_vertices(), obstacle->faces());
+    // Only the static check looks at the obstacle: without it, its frames are not read.
+    if (obstacle && options.check_frames) {
       if (obstacle->num_frames() == 1) {
         y = obstacle->load(0);
       } else {
-        obstacle_reader.emplace(*obstacle, options.first_frame, last, options.read_ahead);
+        obstacle_reader.emplace(*obstacle, options.first_frame, last,
+                                resolve_read_ahead(options, obstacle->num_vertices()));
         y = *obstacle_reader->next();
       }
     }

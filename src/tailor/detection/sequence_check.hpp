@@ -28,7 +28,17 @@ struct SequenceCheckOptions {
   Index last_frame = -1;       ///< last frame checked, inclusive; -1: the sequence's last
   bool check_frames = true;    ///< run the exact static intersection check on every frame
   std::size_t max_pairs = 10;  ///< intersecting face pairs listed per frame
-  int read_ahead = 2;          ///< frames read ahead on a second thread; 0: read in next_step
+  /// Frames read ahead on a second thread; 0: read in next_step. kAutoReadAhead: as many
+  /// as fit in kAutoReadAheadBytes, 2 to kMaxAutoReadAhead (a deep queue lets the reader
+  /// catch up whenever it gets a core, on a machine busy with other work).
+  int read_ahead = kAutoReadAhead;
+
+  /// read_ahead: choose the depth by frame size.
+  static constexpr int kAutoReadAhead = -1;
+  /// Memory the automatic read ahead may fill with frames.
+  static constexpr std::size_t kAutoReadAheadBytes = std::size_t{64} << 20;
+  /// Deepest automatic read ahead (64 MiB hold many frames of a small mesh).
+  static constexpr int kMaxAutoReadAhead = 64;
 };
 
 /// The static check of one frame.

@@ -3,12 +3,14 @@
 /// Frames of a FrameSequence read ahead on a second thread, so that reading (parsing OBJ/PLY
 /// text, checking topology) overlaps the work done on earlier frames.
 
+#include <atomic>
 #include <condition_variable>
-#include <deque>
+#include <cstdint>
 #include <exception>
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <vector>
 
 #include "tailor/geometry/types.hpp"
 #include "tailor/io/frame_sequence.hpp"
@@ -17,10 +19,17 @@ namespace tailor {
 
 /// Hands out frames `first..last` of a sequence in order. A reader thread loads them
 /// (FrameSequence::load, so every frame is checked against the first one) and keeps at most
-/// `read_ahead` loaded frames waiting; with `read_ahead == 0` there is no thread and next()
-/// loads each frame itself. An error while reading a frame (an InputError naming the file)
-/// is thrown by the next() call that would have returned that frame, after every earlier
-/// frame was handed out; the reader stops there.
+/// `read_ahead` loaded frames waiting, refilling once half of them were taken; with
+/// `read_ahead == 0` there is no thread and next() loads each frame itself. An error while
+/// reading a frame (an InputError naming the file) is thrown by the next() call that would
+/// have returned that frame, after every earlier frame was handed out; the reader stops
+/// there.
+///
+/// The frames pass through a ring without a lock, and next() does not wake the reader while
+/// a frame is ready: the reader polls a full ring with growing pauses instead. On a machine
+/// busy with other work, a thread that blocks, or wakes another one, can lose its core for
+/// milliseconds, many steps of a small mesh; the thread calling next() (the detection)
+/// only does so when it has to wait for a frame anyway.
 class FramePrefetcher {
  public:
   /// Starts reading. `frames` must outlive the prefetcher. Throws InputError if the range
@@ -44,6 +53,8 @@ class FramePrefetcher {
 
  private:
   void read_frames();
+  /// Waits until frame `n` (counted from `first`) has room in the ring; false to stop.
+  bool wait_for_room(std::int64_t n);
 
   const FrameSequence& m_frames;
   const Index m_first, m_last;
@@ -51,11 +62,17 @@ class FramePrefetcher {
   Index m_next;  // next frame handed out (consumer side only)
   double m_wait_ms = 0;
 
-  std::mutex m_mutex;
-  std::condition_variable m_changed;  // a frame was queued or taken, or stop was asked
-  std::deque<Positions> m_ready;      // loaded frames m_next, m_next + 1, ...
-  std::exception_ptr m_error;         // the reader's error, after the frames in m_ready
-  bool m_stop = false;
+  // Frame m_first + n sits in m_ring[n % m_read_ahead] from m_loaded > n until m_taken > n.
+  std::vector<Positions> m_ring;
+  std::atomic<std::int64_t> m_loaded{0};  // frames loaded, + 1 once the reader failed
+  std::atomic<std::int64_t> m_taken{0};   // frames handed out
+  std::atomic<bool> m_failed{false};      // the reader stopped at an error
+  std::exception_ptr m_error;             // that error (written before m_failed)
+  std::atomic<bool> m_stop{false};        // the destructor asks the reader to stop
+
+  std::mutex m_mutex;               // guards m_hurry; the reader's pauses wait on it
+  std::condition_variable m_pause;  // ends a pause early: m_hurry or m_stop
+  bool m_hurry = false;             // next() waits for a frame: read on at once
   std::thread m_reader;
 };
 

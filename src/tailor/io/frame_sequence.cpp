@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <optional>
+#include <string>
 #include <system_error>
 
 #include "tailor/geometry/error.hpp"
@@ -75,6 +76,13 @@ std::optional<FramePattern> parse_pattern(const std::string& text) {
   return pattern;
 }
 
+bool is_obj_file(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".obj";
+}
+
 bool is_file(const std::filesystem::path& path) {
   std::error_code ec;
   return std::filesystem::is_regular_file(path, ec);
@@ -135,7 +143,8 @@ FrameSequence::FrameSequence(const std::filesystem::path& folder_or_pattern)
 
 FrameSequence::FrameSequence(std::vector<std::filesystem::path> paths) : m_paths(std::move(paths)) {
   if (m_paths.empty()) throw InputError("a frame sequence needs at least one frame file");
-  m_first = read_mesh(m_paths.front());
+  m_first = is_obj_file(m_paths.front()) ? read_first_obj_frame(m_paths.front(), m_obj_face_text)
+                                         : read_mesh(m_paths.front());
 }
 
 Positions FrameSequence::load(Index i) const {
@@ -145,7 +154,8 @@ Positions FrameSequence::load(Index i) const {
   }
   if (i == 0) return m_first.vertices;
   const std::filesystem::path& file = m_paths[static_cast<std::size_t>(i)];
-  MeshData frame = read_mesh(file);
+  MeshData frame = m_obj_face_text && is_obj_file(file) ? read_obj_frame(file, *m_obj_face_text)
+                                                        : read_mesh(file);
   const std::string first = m_paths.front().string();
   if (frame.vertices.rows() != m_first.vertices.rows()) {
     throw InputError(fmt::format("{}: frame has {} vertices but the first frame {} has {}",
@@ -156,6 +166,7 @@ Positions FrameSequence::load(Index i) const {
     throw InputError(fmt::format("{}: frame has {} faces but the first frame {} has {}",
                                  file.string(), frame.faces.rows(), first, m_first.faces.rows()));
   }
+  if (frame.faces == m_first.faces) return std::move(frame.vertices);  // the common case
   for (Index f = 0; f < frame.faces.rows(); ++f) {
     if (frame.faces.row(f) != m_first.faces.row(f)) {
       throw InputError(fmt::format(

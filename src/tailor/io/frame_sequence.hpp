@@ -3,10 +3,12 @@
 /// A sequence of mesh frames (same connectivity, moving vertices) read one at a time.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "tailor/geometry/types.hpp"
+#include "tailor/io/obj_frames.hpp"
 #include "tailor/mesh/mesh_data.hpp"
 
 namespace tailor {
@@ -23,7 +25,9 @@ namespace tailor {
 std::vector<std::filesystem::path> list_frame_files(const std::filesystem::path& folder_or_pattern);
 
 /// Frames of one animated mesh. Reads the first frame at construction; every other frame
-/// is read only when asked for, so long sequences never sit in memory.
+/// is read only when asked for, so long sequences never sit in memory. OBJ frames whose
+/// faces are written as in the first frame are read without parsing the faces again
+/// (obj_frames.hpp).
 class FrameSequence {
  public:
   /// Lists the frames (see list_frame_files) and reads the first one.
@@ -48,11 +52,13 @@ class FrameSequence {
 
   /// Reads frame `i` and returns its positions. Throws InputError naming the frame file
   /// if it cannot be read, or if its vertex count or faces differ from the first frame.
+  /// Safe to call from several threads at once.
   Positions load(Index i) const;
 
  private:
   std::vector<std::filesystem::path> m_paths;
   MeshData m_first;
+  std::optional<ObjFaceText> m_obj_face_text;  // the first frame's, if an OBJ file
 };
 
 }  // namespace tailor

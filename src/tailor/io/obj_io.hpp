@@ -17,8 +17,10 @@ namespace tailor {
 /// warning per file). Throws InputError naming the file, the line and the problem
 /// (missing file, garbage token, non-finite coordinate, index out of range, face with
 /// fewer than three vertices or a repeated vertex, unknown statement, no face at all, a
-/// line longer than 64 MiB, arrays beyond the memory budget). The file is mapped, not
-/// read into memory (input_file.hpp); quoted tokens are cut to ~40 bytes (excerpt.hpp).
+/// line longer than 64 MiB, arrays beyond the memory budget). Numbers are decimal as
+/// std::from_chars reads them, with one optional leading '+' (no hex floats, no "+-1");
+/// coordinates below the smallest subnormal read as 0. The file is mapped, not read into
+/// memory (input_file.hpp); quoted tokens are cut to ~40 bytes (excerpt.hpp).
 MeshData read_obj(const std::filesystem::path& path);
 
 /// Parses OBJ text already in memory as read_obj() does; `source` names it in errors.

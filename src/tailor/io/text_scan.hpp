@@ -33,11 +33,19 @@ inline std::string_view next_token(std::string_view& s) {
   return token;
 }
 
-/// Parses the whole token as a double (a leading '+' allowed). False if it is not a number.
-/// Non-finite values ("nan", "inf") parse successfully; callers check std::isfinite.
+/// Removes one leading '+' from `token`; false if a second sign follows it ("+-1").
+inline bool strip_plus(std::string_view& token) {
+  if (token.empty() || token.front() != '+') return true;
+  token.remove_prefix(1);
+  return token.empty() || (token.front() != '-' && token.front() != '+');
+}
+
+/// Parses the whole token as a double: what std::from_chars accepts (decimal, no hex), with
+/// one optional leading '+'. False if it is not a number. Out of range values get the IEEE
+/// result (infinity, or 0 or a subnormal below the smallest); non-finite values ("nan",
+/// "inf", "1e999") parse successfully, callers check std::isfinite.
 inline bool parse_double(std::string_view token, double& value) {
-  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-  if (token.empty()) return false;
+  if (!strip_plus(token) || token.empty()) return false;
   const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
   if (ec == std::errc::result_out_of_range && end == token.data() + token.size()) {
     // Rare: let strtod give the IEEE result (infinity on overflow, 0 or subnormal below).
@@ -47,10 +55,9 @@ inline bool parse_double(std::string_view token, double& value) {
   return ec == std::errc() && end == token.data() + token.size();
 }
 
-/// Parses the whole token as a signed integer (a leading '+' allowed).
+/// Parses the whole token as a signed integer (one optional leading '+').
 inline bool parse_int(std::string_view token, std::int64_t& value) {
-  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-  if (token.empty()) return false;
+  if (!strip_plus(token) || token.empty()) return false;
   const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
   return ec == std::errc() && end == token.data() + token.size();
 }
