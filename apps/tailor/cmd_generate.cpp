@@ -42,9 +42,10 @@ const CommandRegistration registration{
           "generate", "Write a procedural deforming step (t0.ply, t1.ply) for detect and bench");
       auto options = std::make_shared<GenerateOptions>();
       command
-          ->add_option("scene", options->scene,
-                       "Scene: folded-cloth (cloth folded onto itself on a sphere: contact-heavy) or "
-                       "crumpling-cloth (a crumpling square cloth: no contact)")
+          ->add_option(
+              "scene", options->scene,
+              "Scene: folded-cloth (cloth folded onto itself on a sphere: contact-heavy) or "
+              "crumpling-cloth (a crumpling square cloth: no contact)")
           ->check(CLI::IsMember({"folded-cloth", "crumpling-cloth"}));
       command->add_option("--triangles", options->triangles, "Approximate triangle count")
           ->check(CLI::Range(std::int64_t{200}, std::int64_t{1} << 26));

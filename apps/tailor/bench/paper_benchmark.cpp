@@ -124,7 +124,8 @@ std::string PaperBenchmark::fig1_markdown() const {
   const PaperRun& r = run("paper");
   md += fmt::format(
       "\nRadial-view classification (paper run, real and ghost triangles of every cluster, "
-      "mean share per step that classified): positive {:.3f}, negative {:.3f}, undetermined {:.3f}\n",
+      "mean share per step that classified): positive {:.3f}, negative {:.3f}, undetermined "
+      "{:.3f}\n",
       mean_share(r, r.radial_positive), mean_share(r, r.radial_negative),
       mean_share(r, r.radial_undetermined));
   return md;

@@ -63,14 +63,14 @@ LaneBits lane_masks(const MovingTriangleBatch& batch, int first_lane) {
       l1((u0y * v0z - u0z * v0y) - x, (u0z * v0x - u0x * v0z) - y, (u0x * v0y - u0y * v0x) - z) +
       l1((u1y * v1z - u1z * v1y) - x, (u1z * v1x - u1x * v1z) - y, (u1x * v1y - u1y * v1x) - z);
   // e0 + eX + e1 = 2^-48·(|u0|₁|v0|₁ + |u0|₁|v1|₁ + |u1|₁|v0|₁ + |u1|₁|v1|₁), factored.
-  const Lanes errors = 0x1p-48 * ((l1(u0x, u0y, u0z) + l1(u1x, u1y, u1z)) *
-                                  (l1(v0x, v0y, v0z) + l1(v1x, v1y, v1z)));
+  const Lanes errors =
+      0x1p-48 * ((l1(u0x, u0y, u0z) + l1(u1x, u1y, u1z)) * (l1(v0x, v0y, v0z) + l1(v1x, v1y, v1z)));
   const Lanes threshold = delta * (1 + 0x1p-48) + 0x1p-50 * l1(x, y, z) + 2 * errors + 0x1p-1060;
   const Lanes negative_threshold = -threshold;
   // Dot products in the order of kDirections, each as at most two additions.
   const Lanes xy = x + y, x_y = x - y;
-  const Lanes dots[13] = {x,      y,      z,       xy,       x_y,      x + z,   x - z,
-                          y + z,  y - z,  xy + z,  xy - z,   x_y + z,  x_y - z};
+  const Lanes dots[13] = {x,     y,     z,      xy,     x_y,     x + z,  x - z,
+                          y + z, y - z, xy + z, xy - z, x_y + z, x_y - z};
   LaneBits mask = {};
   for (int j = 0; j < 13; ++j) {
     mask |= (dots[j] > threshold) & (std::int64_t{1} << (2 * j));

@@ -58,8 +58,8 @@ struct MovingTriangleBatch {
 
   /// Appends a triangle moving from (a0, b0, c0) to (a1, b1, c1) (3 doubles each);
   /// count < kCapacity.
-  void add(const double* a0, const double* b0, const double* c0, const double* a1,
-           const double* b1, const double* c1) {
+  void add(const double* a0, const double* b0, const double* c0, const double* a1, const double* b1,
+           const double* c1) {
     const double* corners[6] = {a0, b0, c0, a1, b1, c1};
     for (int p = 0; p < 6; ++p) {
       for (int j = 0; j < 3; ++j) coordinate[3 * p + j][count] = corners[p][j];

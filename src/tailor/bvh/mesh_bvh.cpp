@@ -94,8 +94,8 @@ MeshBvh::MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector
   for (Index node = 0; node < n; ++node) {
     if (group_root[node]) {
       m_slot[node] = slots++;
-      m_groups.push_back({node, static_cast<Index>(m_leaf_vertices.size()),
-                          static_cast<Index>(m_groups.size())});
+      m_groups.push_back(
+          {node, static_cast<Index>(m_leaf_vertices.size()), static_cast<Index>(m_groups.size())});
       // Its leaves and inner nodes in increasing id order (inner: count - 1 of them).
       for (Index member = node; member < node + 2 * size(node) - 1; ++member) {
         (is_leaf(member) ? m_group_leaf_nodes : m_group_inner_nodes).push_back(member);
@@ -123,9 +123,8 @@ MeshBvh::MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector
           m_groups.begin());
     };
     const auto merge_at = [&](Index id) {
-      return static_cast<Index>(
-          std::lower_bound(m_merge_nodes.begin(), m_merge_nodes.end(), id) -
-          m_merge_nodes.begin());
+      return static_cast<Index>(std::lower_bound(m_merge_nodes.begin(), m_merge_nodes.end(), id) -
+                                m_merge_nodes.begin());
     };
     m_tasks.push_back({group_at(node), group_at(end), merge_at(node), merge_at(end)});
   }
@@ -147,8 +146,7 @@ void MeshBvh::refit(const Positions& x0, const Positions& x1, bool with_directio
   for (Index node : m_top_merges) merge(node, with_directions);
 }
 
-void MeshBvh::prefetch_corners(const Group& group, const Positions& x0,
-                               const Positions& x1) const {
+void MeshBvh::prefetch_corners(const Group& group, const Positions& x0, const Positions& x1) const {
   const Index count = size(group.root);
   for (Index l = 0; l < count; ++l) {
     for (Index v : m_leaf_vertices[group.first_leaf + l]) {
@@ -180,7 +178,8 @@ void MeshBvh::refit_group(const Group& group, const Positions& x0, const Positio
       box.min[k] = static_cast<float>(below_in_float_range(lo));
       box.max[k] = static_cast<float>(-below_in_float_range(-hi));
     }
-    if (with_directions) batch.add(corner[0], corner[1], corner[2], corner[3], corner[4], corner[5]);
+    if (with_directions)
+      batch.add(corner[0], corner[1], corner[2], corner[3], corner[4], corner[5]);
   }
   // The group's inner nodes, children first.
   // (A one-face group has no inner node, and the list may be empty: no indexing.)

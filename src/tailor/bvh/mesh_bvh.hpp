@@ -106,9 +106,9 @@ class MeshBvh {
   // Node ids of every group's leaves (indexed like m_leaf_vertices) and inner nodes
   // (size - 1 per group, from first_leaf - index), each in increasing id order.
   std::vector<Index> m_group_leaf_nodes, m_group_inner_nodes;
-  std::vector<Index> m_merge_nodes;                   // increasing id
-  std::vector<Task> m_tasks;                          // disjoint subtrees
-  std::vector<Index> m_top_merges;                    // merge nodes above the tasks, decreasing
+  std::vector<Index> m_merge_nodes;  // increasing id
+  std::vector<Task> m_tasks;         // disjoint subtrees
+  std::vector<Index> m_top_merges;   // merge nodes above the tasks, decreasing
 };
 
 }  // namespace tailor

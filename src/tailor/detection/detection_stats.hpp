@@ -25,10 +25,11 @@ struct DetectionStats {
   std::int64_t vf_generated = 0, ee_generated = 0;        ///< from CTPs + isolated set
   std::int64_t vf_after_boxes = 0, ee_after_boxes = 0;    ///< survived primitive boxes
   std::int64_t vf_after_filter = 0, ee_after_filter = 0;  ///< survived the DNF filter
-  std::int64_t vf_after_projection = 0, ee_after_projection = 0;  ///< survived the projection filter
-  std::int64_t vf_tested = 0, ee_tested = 0;              ///< sent to the exact CCD
-  std::int64_t vf_colliding = 0, ee_colliding = 0;        ///< collisions found
-  std::int64_t ccd_exact_fallbacks = 0;                   ///< queries the exact path decided
+  std::int64_t vf_after_projection = 0,
+               ee_after_projection = 0;             ///< survived the projection filter
+  std::int64_t vf_tested = 0, ee_tested = 0;        ///< sent to the exact CCD
+  std::int64_t vf_colliding = 0, ee_colliding = 0;  ///< collisions found
+  std::int64_t ccd_exact_fallbacks = 0;             ///< queries the exact path decided
   // Times (ms).
   double refit_ms = 0, traversal_ms = 0, pair_generation_ms = 0, ccd_ms = 0, total_ms = 0;
 

@@ -108,7 +108,8 @@ ProceduralStep make_folded_cloth_on_sphere(std::int64_t target_triangles, std::u
 }
 
 ProceduralStep make_crumpling_cloth_step(std::int64_t target_triangles) {
-  if (target_triangles < 8) throw std::invalid_argument("make_crumpling_cloth_step: at least 8 triangles");
+  if (target_triangles < 8)
+    throw std::invalid_argument("make_crumpling_cloth_step: at least 8 triangles");
   const int cells = std::max(
       2, static_cast<int>(std::lround(std::sqrt(static_cast<double>(target_triangles) / 2.0))));
   MeshData grid = make_grid(cells, cells, 1.0, 1.0);

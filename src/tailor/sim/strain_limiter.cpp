@@ -154,8 +154,7 @@ StrainLimitStats StrainLimiter::apply(Positions& x, int max_sweeps,
   double last_worst = std::numeric_limits<double>::infinity();
   for (int s = 0; s < max_sweeps; ++s) {
     const std::int64_t before = stats.corrections;
-    const double relaxation =
-        last_worst > kOverRelaxedAbove * m_max_strain ? kOverRelaxation : 1.0;
+    const double relaxation = last_worst > kOverRelaxedAbove * m_max_strain ? kOverRelaxation : 1.0;
     const double worst = sweep(x, s % 2 == 0, relaxation, stats.corrections);
     last_worst = worst;
     if (s == 0) stats.max_strain_before = worst;
