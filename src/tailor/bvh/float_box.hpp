@@ -35,15 +35,6 @@ struct FloatBox {
                            -std::numeric_limits<float>::infinity(),
                            -std::numeric_limits<float>::infinity()};
 
-  /// The smallest float box containing the double box [low, high].
-  static FloatBox enclosing(const double low[3], const double high[3]) {
-    FloatBox box;
-    for (int k = 0; k < 3; ++k) {
-      box.min[k] = float_at_most(low[k]);
-      box.max[k] = float_at_least(high[k]);
-    }
-    return box;
-  }
   /// Grows the box to hold `b`.
   void extend(const FloatBox& b) {
     for (int k = 0; k < 3; ++k) {

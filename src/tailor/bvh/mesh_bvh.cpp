@@ -136,7 +136,6 @@ void MeshBvh::refit(const Positions& x0, const Positions& x1, bool with_directio
   tbb::parallel_for(std::size_t{0}, m_tasks.size(), [&](std::size_t t) {
     const Task& task = m_tasks[t];
     for (Index g = task.groups_begin; g < task.groups_end; ++g) {
-      if (g + 1 < task.groups_end) prefetch_corners(m_groups[g + 1], x0, x1);
       refit_group(m_groups[g], x0, x1, with_directions);
     }
     for (Index k = task.merges_end - 1; k >= task.merges_begin; --k) {
@@ -144,16 +143,6 @@ void MeshBvh::refit(const Positions& x0, const Positions& x1, bool with_directio
     }
   });
   for (Index node : m_top_merges) merge(node, with_directions);
-}
-
-void MeshBvh::prefetch_corners(const Group& group, const Positions& x0, const Positions& x1) const {
-  const Index count = size(group.root);
-  for (Index l = 0; l < count; ++l) {
-    for (Index v : m_leaf_vertices[group.first_leaf + l]) {
-      __builtin_prefetch(&x0(v, 0));
-      __builtin_prefetch(&x1(v, 0));
-    }
-  }
 }
 
 void MeshBvh::refit_group(const Group& group, const Positions& x0, const Positions& x1,

@@ -90,8 +90,6 @@ class MeshBvh {
   struct Task {
     Index groups_begin, groups_end, merges_begin, merges_end;
   };
-  // Asks the cache for the corners of a group the refit will read next.
-  void prefetch_corners(const Group& group, const Positions& x0, const Positions& x1) const;
   void refit_group(const Group& group, const Positions& x0, const Positions& x1,
                    bool with_directions);
   void merge(Index node, bool with_directions);
