@@ -39,9 +39,10 @@ void print_stats(const DetectionStats& s) {
       s.node_pairs_visited, s.nodes_culled_by_cones, s.contour_tests, s.contour_tests_failed,
       s.candidate_triangle_pairs);
   fmt::print(
-      "radial view: {} clusters certified; triangles facing {} / away {} / "
-      "undetermined {}\n",
-      s.clusters_certified, s.radial_positive, s.radial_negative, s.radial_undetermined);
+      "radial view: {} CTPs culled; {} clusters classified, {} certified; triangles facing {} / "
+      "away {} / undetermined {}\n",
+      s.radial_pairs_culled, s.clusters_classified, s.clusters_certified, s.radial_positive,
+      s.radial_negative, s.radial_undetermined);
   fmt::print("isolated   : {} VF, {} EE pairs\n", s.isolated_vf_pairs, s.isolated_ee_pairs);
   fmt::print("low level  :        {:>10} {:>10}\n", "VF", "EE");
   fmt::print("  generated         {:>10} {:>10}\n", s.vf_generated, s.ee_generated);
@@ -52,9 +53,9 @@ void print_stats(const DetectionStats& s) {
              s.ee_tested, s.ccd_exact_fallbacks);
   fmt::print("  colliding         {:>10} {:>10}\n", s.vf_colliding, s.ee_colliding);
   fmt::print(
-      "time (ms)  : refit {:.3f}, traversal {:.3f}, pair generation {:.3f}, "
+      "time (ms)  : refit {:.3f}, traversal {:.3f}, radial view {:.3f}, pair generation {:.3f}, "
       "exact CCD {:.3f}, total {:.3f}\n",
-      s.refit_ms, s.traversal_ms, s.pair_generation_ms, s.ccd_ms, s.total_ms);
+      s.refit_ms, s.traversal_ms, s.radial_view_ms, s.pair_generation_ms, s.ccd_ms, s.total_ms);
 }
 
 // The queries the detector sent to the exact CCD, written as query CSVs (`PREFIXvf.csv`,

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <bit>
 #include <cmath>
 #include <random>
 
@@ -114,7 +115,11 @@ TEST(DirectionMask, DegenerateOverflowingOrBatchedTrianglesAreHandled) {
   const DirectionMask up = direction_mask(zero, x, y, zero, x, y);
   EXPECT_TRUE(up >> 4 & 1);
   EXPECT_FALSE(up >> 5 & 1);
-  EXPECT_EQ(first_mask_direction(DirectionMask{1} << 4), Vec3(0, 0, 1));
+  EXPECT_EQ(mask_axis(DirectionMask{1} << 4), Vec3(0, 0, 1));
+  // The whole mask holds the 9 directions with a positive z component, symmetric about
+  // z: their sum is along +z.
+  EXPECT_EQ(std::popcount(up), 9);
+  EXPECT_EQ(mask_axis(up), Vec3(0, 0, 9));
   // A batch is the and of its triangles: +z and -z together leave nothing about z.
   MovingTriangleBatch batch;
   batch.add(zero.data(), x.data(), y.data(), zero.data(), x.data(), y.data());

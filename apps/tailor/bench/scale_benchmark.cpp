@@ -122,16 +122,18 @@ ScaleRow measure(const std::string& name, const ScaleScene& scene, int threads, 
     config.threads = threads;
     SelfCollisionDetector detector(mesh, scene.mesh.vertices, config, scene.section_loops);
     detector.detect(scene.mesh.vertices, scene.x1);  // warm-up: buffers reach their size
-    std::vector<double> refit, traversal, low, ccd, total;
+    std::vector<double> refit, traversal, radial, low, ccd, total;
     DetectionStats stats;
     for (int r = 0; r < repetitions; ++r) {
       stats = detector.detect(scene.mesh.vertices, scene.x1).stats;
       refit.push_back(stats.refit_ms), traversal.push_back(stats.traversal_ms);
+      radial.push_back(stats.radial_view_ms);
       low.push_back(stats.pair_generation_ms), ccd.push_back(stats.ccd_ms);
       total.push_back(stats.total_ms);
     }
     row.bytes_per_triangle = (status_bytes("VmHWM:") - resident_before) / row.triangles;
     row.refit_ms = median(refit), row.traversal_ms = median(traversal);
+    row.radial_view_ms = median(radial);
     row.low_level_ms = median(low), row.ccd_ms = median(ccd), row.total_ms = median(total);
     row.ctps = stats.candidate_triangle_pairs;
     row.vf = stats.vf_tested, row.ee = stats.ee_tested;
@@ -195,31 +197,34 @@ std::vector<ScaleRow> run_scale_benchmark(const ScaleOptions& options) {
 
 std::string scale_csv(const std::vector<ScaleRow>& rows) {
   std::string csv =
-      "scene,threads,triangles,floor_ms,refit_ms,traversal_ms,low_level_ms,ccd_ms,total_ms,"
-      "ctps,vf,ee,collisions,pairs_per_collision,bytes_per_triangle,peak_mib\n";
+      "scene,threads,triangles,floor_ms,refit_ms,traversal_ms,radial_view_ms,low_level_ms,ccd_ms,"
+      "total_ms,ctps,vf,ee,collisions,pairs_per_collision,bytes_per_triangle,peak_mib\n";
   for (const ScaleRow& r : rows) {
     csv += fmt::format(
-        "{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{},{},{},{},{:.3f},{:.1f},{:.1f}\n",
-        r.scene, r.threads, r.triangles, r.floor_ms, r.refit_ms, r.traversal_ms, r.low_level_ms,
-        r.ccd_ms, r.total_ms, r.ctps, r.vf, r.ee, r.collisions, r.pairs_per_collision(),
-        r.bytes_per_triangle, r.peak_mib);
+        "{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{},{},{},{},{:.3f},{:.1f},{:.1f}"
+        "\n",
+        r.scene, r.threads, r.triangles, r.floor_ms, r.refit_ms, r.traversal_ms, r.radial_view_ms,
+        r.low_level_ms, r.ccd_ms, r.total_ms, r.ctps, r.vf, r.ee, r.collisions,
+        r.pairs_per_collision(), r.bytes_per_triangle, r.peak_mib);
   }
   return csv;
 }
 
 std::string scale_markdown(const std::vector<ScaleRow>& rows) {
   std::string md =
-      "| scene | threads | triangles | floor | refit | traversal | low level | exact CCD | "
-      "total | all but CCD | CTPs | to CCD | collisions | pairs/collision | B/triangle |\n"
-      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+      "| scene | threads | triangles | floor | refit | traversal | radial view | low level | "
+      "exact CCD | total | all but CCD | CTPs | to CCD | collisions | pairs/collision | "
+      "B/triangle |\n"
+      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const ScaleRow& r : rows) {
     md += fmt::format(
-        "| {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {} | {} | "
-        "{} | {:.2f} | {:.0f} |\n",
+        "| {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | "
+        "{} "
+        "| {} | {} | {:.2f} | {:.0f} |\n",
         r.scene, r.threads, with_commas(r.triangles), r.floor_ms, r.refit_ms, r.traversal_ms,
-        r.low_level_ms, r.ccd_ms, r.total_ms, r.total_ms - r.ccd_ms, with_commas(r.ctps),
-        with_commas(r.vf + r.ee), with_commas(r.collisions), r.pairs_per_collision(),
-        r.bytes_per_triangle);
+        r.radial_view_ms, r.low_level_ms, r.ccd_ms, r.total_ms, r.total_ms - r.ccd_ms,
+        with_commas(r.ctps), with_commas(r.vf + r.ee), with_commas(r.collisions),
+        r.pairs_per_collision(), r.bytes_per_triangle);
   }
   return md;
 }

@@ -20,7 +20,8 @@ struct ScaleRow {
   int threads = 1;
   Index triangles = 0;
   double floor_ms = 0;  ///< read x0 and x1 and compute every face's swept box (same threads)
-  double refit_ms = 0, traversal_ms = 0, low_level_ms = 0, ccd_ms = 0, total_ms = 0;
+  double refit_ms = 0, traversal_ms = 0, radial_view_ms = 0, low_level_ms = 0, ccd_ms = 0,
+         total_ms = 0;
   std::int64_t ctps = 0, vf = 0, ee = 0, collisions = 0;
   /// Peak memory of the detector (topology, BVH, culling data, buffers of a step) per
   /// triangle: the rise of the peak resident set size over its value before the mesh

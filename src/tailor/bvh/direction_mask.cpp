@@ -87,9 +87,12 @@ Vec3 mask_direction(int k) {
   return sign * Vec3(c[0], c[1], c[2]);
 }
 
-Vec3 first_mask_direction(DirectionMask mask) {
-  const Vec3 d = mask_direction(__builtin_ctz(mask));
-  return d / d.norm();
+Vec3 mask_axis(DirectionMask mask) {
+  Vec3 sum = Vec3::Zero();
+  for (DirectionMask rest = mask; rest != 0; rest &= rest - 1) {
+    sum += mask_direction(__builtin_ctz(rest));
+  }
+  return sum;
 }
 
 DirectionMask direction_mask(const MovingTriangleBatch& batch) {

@@ -45,8 +45,14 @@ inline constexpr DirectionMask kAllDirections = (DirectionMask{1} << kMaskDirect
 /// Direction of bit `k` (components in {-1, 0, 1}, not normalised).
 Vec3 mask_direction(int k);
 
-/// The unit direction of the lowest set bit of a nonzero `mask`.
-Vec3 first_mask_direction(DirectionMask mask);
+/// The sum of the directions of a nonzero `mask` (integer components, exact): within 90°
+/// of every normal the mask certifies (a positive combination of directions that all are)
+/// and central among them, so that a projection along it distorts the least. The first
+/// direction alone is often nearly perpendicular to some normal, and the contour test then
+/// fails on a projected contour too thin to certify (the bending sleeve of 299K triangles:
+/// 12,091 of 14,524 contour tests failed with the first direction, 1,590 of 2,259 with
+/// the sum; candidate pairs 659,340 against 261,098).
+Vec3 mask_axis(DirectionMask mask);
 
 /// Up to kCapacity moving triangles in structure-of-arrays form, so that the mask of all of
 /// them is computed in vectorisable loops. Corner k ∈ {a, b, c} at frame s ∈ {0, 1},

@@ -57,12 +57,12 @@ class MeshBvh {
   DirectionMask direction_mask(Index node) const {
     return m_slot[node] >= 0 ? m_masks[m_slot[node]] : 0;
   }
-  /// A unit axis within 90° of every normal below the node over the whole step (the
-  /// first direction of its mask), or nothing.
+  /// An axis (not normalised) within 90° of every normal below the node over the whole
+  /// step (mask_axis() of its mask), or nothing.
   std::optional<Vec3> acute_axis(Index node) const {
     const DirectionMask mask = direction_mask(node);
     if (mask == 0) return std::nullopt;
-    return first_mask_direction(mask);
+    return mask_axis(mask);
   }
   /// Whether a node keeps a mask (groups and merge nodes), and its index among the
   /// num_masks() nodes that do.

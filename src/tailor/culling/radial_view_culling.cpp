@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <optional>
 
@@ -41,16 +42,15 @@ RadialViewCulling::RadialViewCulling(const TriangleMesh& mesh, const Positions& 
   m_slot.resize(static_cast<std::size_t>(n));
   m_cluster_vertices.resize(static_cast<std::size_t>(n));
   m_local_faces.resize(static_cast<std::size_t>(n));
-  m_in_some_cluster.assign(static_cast<std::size_t>(mesh.num_faces()), 0);
   std::vector<Index> local(static_cast<std::size_t>(mesh.num_vertices()), -1);
   for (Index c = 0; c < n; ++c) {
     if (!m_clusters.usable(c)) continue;
+    m_usable |= std::uint64_t{1} << c;
     const auto& faces = m_clusters.faces(c);
     m_slot[c].assign(static_cast<std::size_t>(mesh.num_faces()), -1);
     std::vector<Index>& vertices = m_cluster_vertices[c];
     for (std::size_t i = 0; i < faces.size(); ++i) {
       m_slot[c][faces[i]] = static_cast<Index>(i);
-      m_in_some_cluster[faces[i]] = 1;
       std::array<Index, 3> corners{};
       for (int k = 0; k < 3; ++k) {
         const Index v = mesh.faces()(faces[i], k);
@@ -65,25 +65,76 @@ RadialViewCulling::RadialViewCulling(const TriangleMesh& mesh, const Positions& 
     for (Index v : vertices) local[v] = -1;
   }
   m_clean_mask.assign(static_cast<std::size_t>(mesh.num_faces()), 0);
-  m_face_planes.resize(static_cast<std::size_t>(mesh.num_faces()));
 }
 
 RadialViewCounts RadialViewCulling::classify(const Positions& x0, const Positions& x1,
                                              bool find_clean) {
+  begin_step(x0, x1, find_clean);
+  return classify_clusters(m_usable);
+}
+
+void RadialViewCulling::begin_step(const Positions& x0, const Positions& x1, bool find_clean) {
   m_x0 = &x0;
   m_x1 = &x1;
-  const TriangleMesh& mesh = m_clusters.mesh();
-  tbb::parallel_for(Index{0}, mesh.num_faces(), [&](Index f) {
-    if (!m_in_some_cluster[f]) return;
-    const auto v = mesh.faces().row(f);
-    m_face_planes[f] = MovingPlane(x0.row(v[0]), x0.row(v[1]), x0.row(v[2]), x1.row(v[0]),
-                                   x1.row(v[1]), x1.row(v[2]));
-  });
-  const Index n = m_clusters.num_clusters();
-  tbb::parallel_for(Index{0}, n, [&](Index c) { classify_cluster(c, x0, x1, find_clean); });
-  std::fill(m_clean_mask.begin(), m_clean_mask.end(), 0);
+  m_find_clean = find_clean;
+  m_wanted = 0;
+  if (m_clean_mask_dirty) std::fill(m_clean_mask.begin(), m_clean_mask.end(), 0);
+  m_clean_mask_dirty = false;
+  for (Index c = 0; c < m_clusters.num_clusters(); ++c) {
+    ClusterState& state = m_state[c];
+    state.counts = {};
+    state.face_sign.clear();
+    if (!m_clusters.usable(c)) continue;
+    state.observer0 = m_clusters.observer(c, x0);
+    state.observer1 = m_clusters.observer(c, x1);
+    state.face_raw.assign(m_clusters.faces(c).size(), kUnknownSign);
+  }
+}
+
+signed char RadialViewCulling::raw_sign(Index c, Index f) const {
+  ClusterState& state = m_state[c];
+  std::atomic_ref<signed char> cached(state.face_raw[m_slot[c][f]]);
+  signed char raw = cached.load(std::memory_order_relaxed);
+  if (raw != kUnknownSign) return raw;
+  // det(b-a, c-a, o-a) = det(o-a, b-a, c-a): the side of the observer of the face's
+  // plane. Deterministic, so threads racing on one entry store the same value.
+  const auto v = m_clusters.mesh().faces().row(f);
+  const Positions& x0 = *m_x0;
+  const Positions& x1 = *m_x1;
+  raw = static_cast<signed char>(coplanarity_sign(x0.row(v[0]), state.observer0, x0.row(v[1]),
+                                                  x0.row(v[2]), x1.row(v[0]), state.observer1,
+                                                  x1.row(v[1]), x1.row(v[2])));
+  cached.store(raw, std::memory_order_relaxed);
+  return raw;
+}
+
+RadialViewCounts RadialViewCulling::classify_wanted() {
+  std::uint64_t wanted = m_wanted;
+  if (!m_find_clean) {
+    // Only certification can cull here, and it needs every raw sign equal and nonzero: two
+    // different raw signs among those the pairs computed already rule it out.
+    for (std::uint64_t rest = wanted; rest != 0; rest &= rest - 1) {
+      const auto c = static_cast<Index>(std::countr_zero(rest));
+      bool seen_negative = false, seen_positive = false, seen_zero = false;
+      for (signed char raw : m_state[c].face_raw) {
+        seen_negative |= raw < 0, seen_positive |= raw == 1, seen_zero |= raw == 0;
+      }
+      if (seen_zero || (seen_negative && seen_positive)) wanted &= ~(std::uint64_t{1} << c);
+    }
+  }
+  return classify_clusters(wanted);
+}
+
+RadialViewCounts RadialViewCulling::classify_clusters(std::uint64_t clusters) {
+  std::vector<Index> chosen;
+  for (std::uint64_t rest = clusters & m_usable; rest != 0; rest &= rest - 1) {
+    chosen.push_back(static_cast<Index>(std::countr_zero(rest)));
+  }
+  tbb::parallel_for(std::size_t{0}, chosen.size(),
+                    [&](std::size_t i) { classify_cluster(chosen[i]); });
   RadialViewCounts counts;
-  for (Index c = 0; c < n; ++c) {
+  counts.clusters_classified = static_cast<std::int64_t>(chosen.size());
+  for (Index c : chosen) {
     const ClusterState& state = m_state[c];
     counts.clusters_used += state.counts.clusters_used;
     counts.clusters_certified += state.counts.clusters_certified;
@@ -93,31 +144,26 @@ RadialViewCounts RadialViewCulling::classify(const Positions& x0, const Position
     counts.faces_clean += state.counts.faces_clean;
     const auto& faces = m_clusters.faces(c);
     for (std::size_t i = 0; i < state.face_sign.size(); ++i) {
-      if (state.face_sign[i] == 2) m_clean_mask[faces[i]] |= std::uint64_t{1} << c;
+      if (state.face_sign[i] == 2) {
+        m_clean_mask[faces[i]] |= std::uint64_t{1} << c;
+        m_clean_mask_dirty = true;
+      }
     }
   }
   return counts;
 }
 
-void RadialViewCulling::classify_cluster(Index c, const Positions& x0, const Positions& x1,
-                                         bool find_clean) {
+void RadialViewCulling::classify_cluster(Index c) {
   ClusterState& state = m_state[c];
-  state.counts = {};
-  state.face_raw.clear();
-  state.face_sign.clear();
-  if (!m_clusters.usable(c)) return;
+  const Positions& x0 = *m_x0;
+  const Positions& x1 = *m_x1;
+  const bool find_clean = m_find_clean;
   const TriangleMesh& mesh = m_clusters.mesh();
   const auto& faces = m_clusters.faces(c);
-  const Vec3 o0 = m_clusters.observer(c, x0), o1 = m_clusters.observer(c, x1);
-  state.observer0 = o0;
-  state.observer1 = o1;
+  const Vec3 o0 = state.observer0, o1 = state.observer1;
 
-  // Raw signs of det(b-a, c-a, o-a) over the step; the plane of a face does not depend on
-  // the observer, so it was built once for every cluster.
-  state.face_raw.resize(faces.size());
-  for (std::size_t i = 0; i < faces.size(); ++i) {
-    state.face_raw[i] = static_cast<signed char>(m_face_planes[faces[i]].side(o0, o1));
-  }
+  // Raw signs of det(b-a, c-a, o-a) over the step (those the pairs did not need yet).
+  for (Index f : faces) raw_sign(c, f);
   // The ghost triangles (w, u, centre) of each loop edge u -> w.
   struct Ghost {
     Index u, w;
@@ -333,25 +379,40 @@ bool edge_plane_separates(const FaceCorners& f, int side, const FaceCorners& g, 
 
 }  // namespace
 
-bool RadialViewCulling::pair_culled(Index f, Index g) const {
-  const std::uint64_t common = m_clusters.member_mask(f) & m_clusters.member_mask(g);
-  if (common == 0) return false;
-  if (((m_clean_mask[f] | m_clean_mask[g]) & common) != 0) return true;
+bool RadialViewCulling::separated_in(Index f, Index g, std::uint64_t clusters,
+                                     std::uint64_t* wanted) const {
   const TriangleMesh& mesh = m_clusters.mesh();
   const FaceCorners cf = face_corners(mesh, f, *m_x0, *m_x1);
   const FaceCorners cg = face_corners(mesh, g, *m_x0, *m_x1);
-  for (std::uint64_t rest = common; rest != 0; rest &= rest - 1) {
+  for (std::uint64_t rest = clusters; rest != 0; rest &= rest - 1) {
     const auto c = static_cast<Index>(std::countr_zero(rest));
     const ClusterState& state = m_state[c];
-    if (state.face_raw.empty()) continue;
-    const Vec3& o0 = state.observer0;
-    const Vec3& o1 = state.observer1;
-    if (edge_plane_separates(cf, state.face_raw[m_slot[c][f]], cg, o0, o1) ||
-        edge_plane_separates(cg, state.face_raw[m_slot[c][g]], cf, o0, o1)) {
+    const signed char raw_f = raw_sign(c, f), raw_g = raw_sign(c, g);
+    if (edge_plane_separates(cf, raw_f, cg, state.observer0, state.observer1) ||
+        edge_plane_separates(cg, raw_g, cf, state.observer0, state.observer1)) {
       return true;
+    }
+    // Without clean faces only a certified cluster (every face positive, so both raw
+    // signs equal and nonzero) can still cull the pair.
+    if (wanted && (m_find_clean || (raw_f != 0 && raw_f == raw_g))) {
+      *wanted |= std::uint64_t{1} << c;
     }
   }
   return false;
+}
+
+bool RadialViewCulling::edge_planes_separate(Index f, Index g) {
+  std::uint64_t wanted = 0;
+  if (separated_in(f, g, shared_clusters(f, g), &wanted)) return true;
+  std::atomic_ref<std::uint64_t> all_wanted(m_wanted);
+  if ((all_wanted.load(std::memory_order_relaxed) & wanted) != wanted) {
+    all_wanted.fetch_or(wanted, std::memory_order_relaxed);
+  }
+  return false;
+}
+
+bool RadialViewCulling::pair_culled(Index f, Index g) const {
+  return classified_clean(f, g) || separated_in(f, g, shared_clusters(f, g), nullptr);
 }
 
 std::int64_t RadialViewCulling::cull(std::vector<TrianglePair>& pairs) const {

@@ -55,6 +55,7 @@
 /// produced, so radial view never costs more candidate pairs than the traversal alone.
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -68,6 +69,7 @@ namespace tailor {
 /// Counts of one step's radial-view classification (real and ghost triangles, summed over
 /// the clusters; a face in two clusters counts twice).
 struct RadialViewCounts {
+  std::int64_t clusters_classified = 0;     ///< usable clusters classified
   std::int64_t clusters_used = 0;           ///< clusters whose winding number was ±1
   std::int64_t clusters_certified = 0;      ///< clusters with every triangle positive
   std::int64_t triangles_positive = 0;      ///< observer strictly on the seeing side
@@ -78,6 +80,18 @@ struct RadialViewCounts {
 };
 
 /// The per-step state of radial-view culling over a fixed set of clusters.
+///
+/// Two ways to use a step. classify() classifies every cluster, then pair_culled() answers
+/// for any pair. The lazy way costs only what the pairs at hand need: begin_step(), then
+/// edge_planes_separate() on each pair (rule (5), computing the few raw signs it reads),
+/// then classify_wanted() classifies only the clusters in which some pair it kept could
+/// still be culled by (4) (with clean faces off: only clusters in which both faces of a
+/// kept pair have the same nonzero raw sign, since a certified cluster has every face
+/// positive), and classified_clean() finishes the pairs. Both ways cull exactly the same
+/// pairs: a pair is culled iff rule (5) holds in a shared cluster or one of its faces is
+/// clean in a shared cluster, and the lazy way classifies every cluster that can make a
+/// kept pair's face clean. A sleeve's contact-free clusters, where every pair is culled by
+/// (5), are then never classified (their O(faces) classification is most of the cost).
 class RadialViewCulling {
  public:
   RadialViewCulling() = default;
@@ -98,6 +112,22 @@ class RadialViewCulling {
   /// whose candidates never share a vertex (adjacency culling on) may skip it.
   RadialViewCounts classify(const Positions& x0, const Positions& x1, bool find_clean = true);
 
+  /// Starts a step of the lazy way (class comment) from `x0` to `x1` (kept alive by the
+  /// caller for the step), classifying nothing yet; `find_clean` as for classify().
+  void begin_step(const Positions& x0, const Positions& x1, bool find_clean);
+  /// Rule (5) of the header for faces f and g in some cluster they share, over the step
+  /// begun. When it answers false, remembers the shared clusters whose classification
+  /// could still cull the pair. Safe to call from several threads at once.
+  bool edge_planes_separate(Index f, Index g);
+  /// Classifies the clusters remembered by edge_planes_separate() since begin_step()
+  /// (parallel over clusters); the counts cover those clusters only.
+  RadialViewCounts classify_wanted();
+  /// Whether f or g is clean in a cluster they share (after classify() or
+  /// classify_wanted()).
+  bool classified_clean(Index f, Index g) const {
+    return ((m_clean_mask[f] | m_clean_mask[g]) & shared_clusters(f, g)) != 0;
+  }
+
   /// Whether the pair of faces (f, g) cannot collide over the classified step.
   bool pair_culled(Index f, Index g) const;
 
@@ -109,13 +139,18 @@ class RadialViewCulling {
   std::uint64_t clean_mask(Index f) const { return m_clean_mask[f]; }
   /// Per face of cluster `c` (in clusters().faces(c) order), over the classified step: -1
   /// negative, 0 undetermined, 1 positive, 2 positive and clean (all 0 when the cluster's
-  /// winding number is not ±1; empty when the cluster is not usable).
+  /// winding number is not ±1; empty when the cluster is not usable or was not classified
+  /// this step).
   const std::vector<signed char>& face_signs(Index c) const { return m_state[c].face_sign; }
 
  private:
+  // A raw sign not computed yet this step.
+  static constexpr signed char kUnknownSign = 2;
   struct ClusterState {
     Vec3 observer0 = Vec3::Zero(), observer1 = Vec3::Zero();
-    std::vector<signed char> face_raw;   // coplanarity_sign(a, b, c, observer) per face
+    // coplanarity_sign(a, b, c, observer) per face, computed when first needed (atomic
+    // access while pairs are tested in parallel); empty when the cluster is not usable.
+    std::vector<signed char> face_raw;
     std::vector<signed char> face_sign;  // as face_signs()
     RadialViewCounts counts;
     // Scratch reused from step to step.
@@ -123,21 +158,36 @@ class RadialViewCulling {
     std::vector<char> unit_ok;
     std::vector<ViewCone> cones;
   };
-  void classify_cluster(Index c, const Positions& x0, const Positions& x1, bool find_clean);
+  // The usable clusters holding both f and g.
+  std::uint64_t shared_clusters(Index f, Index g) const {
+    return m_clusters.member_mask(f) & m_clusters.member_mask(g) & m_usable;
+  }
+  // The raw sign of face `f` in cluster `c` (a usable cluster holding f) over the step.
+  signed char raw_sign(Index c, Index f) const;
+  // Rule (5) in any of `clusters`; when it fails and `wanted` is given, adds the clusters
+  // whose classification could still cull the pair.
+  bool separated_in(Index f, Index g, std::uint64_t clusters, std::uint64_t* wanted) const;
+  RadialViewCounts classify_clusters(std::uint64_t clusters);
+  void classify_cluster(Index c);
   void find_clean_faces(Index c, const std::vector<std::size_t>& blocking,
                         const std::vector<ViewCone>& ghost_cones);
 
   RadialViewClusters m_clusters;
-  std::vector<ClusterState> m_state;
+  // mutable: raw signs are a per-step cache filled by const queries.
+  mutable std::vector<ClusterState> m_state;
   std::vector<std::uint64_t> m_clean_mask;
-  std::vector<MovingPlane> m_face_planes;  // plane of each face over the step
-  std::vector<char> m_in_some_cluster;
+  bool m_clean_mask_dirty = false;  // some bit set since it was last cleared
+  std::uint64_t m_usable = 0;       // bit c: cluster c is usable
+  bool m_find_clean = true;
+  // Clusters to classify (lazy way); updated through std::atomic_ref (keeps the class
+  // movable).
+  alignas(std::atomic_ref<std::uint64_t>::required_alignment) std::uint64_t m_wanted = 0;
   // Per cluster: its vertices, and each face's three vertices as indices into them.
   std::vector<std::vector<Index>> m_cluster_vertices;
   std::vector<std::vector<std::array<Index, 3>>> m_local_faces;
   // Position of face f within clusters().faces(c), per cluster; -1 if not a member.
   std::vector<std::vector<Index>> m_slot;
-  const Positions* m_x0 = nullptr;  // the classified step
+  const Positions* m_x0 = nullptr;  // the step
   const Positions* m_x1 = nullptr;
 };
 

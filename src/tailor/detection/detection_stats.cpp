@@ -8,13 +8,14 @@ namespace tailor {
 // clang-format off
 #define TAILOR_DETECTION_STATS_FIELDS(X)                                                    \
   X(node_pairs_visited) X(nodes_culled_by_cones) X(contour_tests) X(contour_tests_failed)   \
+  X(radial_pairs_culled) X(clusters_classified)                                            \
   X(clusters_certified) X(radial_positive) X(radial_negative) X(radial_undetermined)        \
   X(candidate_triangle_pairs) X(isolated_vf_pairs) X(isolated_ee_pairs)                     \
   X(vf_generated) X(ee_generated) X(vf_after_boxes) X(ee_after_boxes)                       \
   X(vf_after_filter) X(ee_after_filter) X(vf_after_projection) X(ee_after_projection)       \
   X(vf_tested) X(ee_tested)                                                                 \
   X(vf_colliding) X(ee_colliding) X(ccd_exact_fallbacks)                                    \
-  X(refit_ms) X(traversal_ms) X(pair_generation_ms) X(ccd_ms) X(total_ms)
+  X(refit_ms) X(traversal_ms) X(radial_view_ms) X(pair_generation_ms) X(ccd_ms) X(total_ms)
 // clang-format on
 
 DetectionStats& DetectionStats::operator+=(const DetectionStats& other) {

@@ -14,10 +14,13 @@ struct DetectionStats {
   std::int64_t nodes_culled_by_cones = 0;     ///< nodes whose self-test the normal cone skipped
   std::int64_t contour_tests = 0;             ///< contour tests run (the node's mask was not empty)
   std::int64_t contour_tests_failed = 0;      ///< contour tests that could not certify
+  std::int64_t radial_pairs_culled = 0;       ///< CTPs radial view removed
+  std::int64_t clusters_classified = 0;       ///< radial-view clusters classified (lazily:
+                                              ///< only where a kept pair needed it)
   std::int64_t clusters_certified = 0;        ///< radial-view clusters skipped whole
   std::int64_t radial_positive = 0;           ///< radial view: triangles (real + ghost) facing
   std::int64_t radial_negative = 0;           ///<   their observer, facing away, or neither
-  std::int64_t radial_undetermined = 0;       ///<   over the whole step
+  std::int64_t radial_undetermined = 0;       ///<   over the whole step (classified clusters)
   std::int64_t candidate_triangle_pairs = 0;  ///< CTPs emitted
   std::int64_t isolated_vf_pairs = 0;         ///< VF pairs of the isolated set
   std::int64_t isolated_ee_pairs = 0;         ///< EE pairs of the isolated set
@@ -31,7 +34,8 @@ struct DetectionStats {
   std::int64_t vf_colliding = 0, ee_colliding = 0;  ///< collisions found
   std::int64_t ccd_exact_fallbacks = 0;             ///< queries the exact path decided
   // Times (ms).
-  double refit_ms = 0, traversal_ms = 0, pair_generation_ms = 0, ccd_ms = 0, total_ms = 0;
+  double refit_ms = 0, traversal_ms = 0, radial_view_ms = 0, pair_generation_ms = 0, ccd_ms = 0,
+         total_ms = 0;
 
   /// Adds another step's counts and times (for means over many steps).
   DetectionStats& operator+=(const DetectionStats& other);

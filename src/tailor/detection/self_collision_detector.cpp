@@ -69,22 +69,34 @@ struct SelfCollisionDetector::Impl {
     });
   }
 
-  void high_level(const Positions& x0, const Positions& x1, DetectionStats& stats) {
+  void traverse(const Positions& x0, const Positions& x1) {
     traversal.clear();
     const TraversalOptions options{config.normal_cones, config.contour_test,
                                    config.adjacency_culling};
     traversal.self(bvh, contours, {x0, x1}, options);
-    // Radial view only removes candidates: with none, its classification would be wasted.
-    if (use_radial_view && traversal.size() > 0) {
-      // Clean faces matter only where candidates may share a vertex (radial_view_culling.hpp).
-      const RadialViewCounts counts = radial.classify(x0, x1, !config.adjacency_culling);
-      traversal.remove_if(
-          [&](const TrianglePair& p) { return radial.pair_culled(p.first, p.second); });
-      stats.clusters_certified = counts.clusters_certified;
-      stats.radial_positive = counts.triangles_positive;
-      stats.radial_negative = counts.triangles_negative;
-      stats.radial_undetermined = counts.triangles_undetermined;
+  }
+
+  // Radial view only removes candidates: with none, it has nothing to do. Lazily: rule (5)
+  // first, then only the clusters that can still cull a kept pair are classified.
+  void radial_view_cull(const Positions& x0, const Positions& x1, DetectionStats& stats) {
+    if (!use_radial_view || traversal.size() == 0) return;
+    // Clean faces matter only where candidates may share a vertex (radial_view_culling.hpp).
+    radial.begin_step(x0, x1, !config.adjacency_culling);
+    stats.radial_pairs_culled = traversal.remove_if(
+        [&](const TrianglePair& p) { return radial.edge_planes_separate(p.first, p.second); });
+    const RadialViewCounts counts = radial.classify_wanted();
+    if (counts.clusters_used > 0) {
+      stats.radial_pairs_culled += traversal.remove_if(
+          [&](const TrianglePair& p) { return radial.classified_clean(p.first, p.second); });
     }
+    stats.clusters_classified = counts.clusters_classified;
+    stats.clusters_certified = counts.clusters_certified;
+    stats.radial_positive = counts.triangles_positive;
+    stats.radial_negative = counts.triangles_negative;
+    stats.radial_undetermined = counts.triangles_undetermined;
+  }
+
+  void record_high_level(DetectionStats& stats) {
     const TraversalCounts counts = traversal.counts();
     stats.node_pairs_visited = counts.node_pairs_visited;
     stats.nodes_culled_by_cones = counts.nodes_culled_by_cones;
@@ -154,9 +166,13 @@ struct SelfCollisionDetector::Impl {
       bvh.refit(x0, x1, config.normal_cones);
       stats.refit_ms = elapsed_ms(start);
 
-      const auto stage = Clock::now();
-      high_level(x0, x1, stats);
+      auto stage = Clock::now();
+      traverse(x0, x1);
       stats.traversal_ms = elapsed_ms(stage);
+      stage = Clock::now();
+      radial_view_cull(x0, x1, stats);
+      stats.radial_view_ms = elapsed_ms(stage);
+      record_high_level(stats);
       if (config.keep_candidate_pairs) {
         for (std::span<const TrianglePair> block : traversal.blocks()) {
           result.candidate_triangle_pairs.insert(result.candidate_triangle_pairs.end(),
