@@ -83,6 +83,26 @@ TEST(ContourTest, TouchingContourIsNotSimple) {
   EXPECT_TRUE(contour_stays_simple(loop, x0, x1, Vec3::UnitZ()));
 }
 
+TEST(ContourTest, CollinearEdgesAreSeparatedAlongTheirLine) {
+  // A rectangle with a notch: edges AB and EF lie on one line (y = 0). Moved rigidly by
+  // more than the gap between them, their swept boxes overlap while they stay disjoint at
+  // every t: only separation along the line can certify them (no side test can: each
+  // lies on the other's line).
+  Positions x0(8, 3);
+  x0 << 0, 0, 0, 1, 0, 0, 1, -1, 0, 2, -1, 0, 2, 0, 0, 3, 0, 0, 3, 1, 0, 0, 1, 0;
+  const std::vector<Index> loop{0, 1, 2, 3, 4, 5, 6, 7};
+  Positions x1 = x0;
+  x1.col(0).array() += 2.0;
+  EXPECT_TRUE(contour_stays_simple(loop, x0, x1, Vec3::UnitZ()));
+  // E slides left along the line past B during the step: EF overlaps AB at the end.
+  x1 = x0;
+  x1.row(4) << 0.5, 0, 0;
+  EXPECT_FALSE(contour_stays_simple(loop, x0, x1, Vec3::UnitZ()));
+  // ... and until E reaches B's x exactly: the edges touch at t = 1.
+  x1.row(4) << 1, 0, 0;
+  EXPECT_FALSE(contour_stays_simple(loop, x0, x1, Vec3::UnitZ()));
+}
+
 TEST(NormalConeCulling, ContourTestIsWhatKeepsTheRibbonCollisions) {
   const Ribbon ribbon = make_ribbon(80, 0.02, -0.02);
   const TriangleMesh mesh(static_cast<Index>(ribbon.mesh.vertices.rows()), ribbon.mesh.faces);

@@ -57,7 +57,11 @@ bool corner_stays_simple(const Moving& u, const Moving& v, const Vec3& a) {
 }
 
 // Segments pq and rs certainly disjoint: on each piece of the step, r and s strictly on
-// one side of pq, or p and q strictly on one side of rs.
+// one side of the line pq, or p and q strictly on one side of the line rs. Collinear
+// segments pass neither test (consecutive boundary edges along one straight line of the
+// mesh: a tube's generators, a grid's rows, which a rigid motion keeps collinear), so
+// then also: r and s strictly beyond q along pq, or strictly before p (the line through
+// q, or p, perpendicular to pq has pq on one side and rs strictly on the other).
 bool certainly_disjoint(const Positions& x0, const Positions& x1, Index p, Index q, Index r,
                         Index s, const Vec3& a) {
   const Moving pq = difference(x0, x1, p, q), rs = difference(x0, x1, r, s);
@@ -65,12 +69,22 @@ bool certainly_disjoint(const Positions& x0, const Positions& x1, Index p, Index
   const Quadratic side_s = orientation(pq, difference(x0, x1, p, s), a);
   const Quadratic side_p = orientation(rs, difference(x0, x1, r, p), a);
   const Quadratic side_q = orientation(rs, difference(x0, x1, r, q), a);
+  const auto by_sides = [&](double lo, double hi) {
+    const int r_sign = side_r.sign_on(lo, hi);
+    if (r_sign != 0 && r_sign == side_s.sign_on(lo, hi)) return true;
+    const int p_sign = side_p.sign_on(lo, hi);
+    return p_sign != 0 && p_sign == side_q.sign_on(lo, hi);
+  };
+  if (holds_piecewise(by_sides, kMaxDepth)) return true;
+  const Quadratic beyond_r = projected_dot(pq, difference(x0, x1, q, r), a);
+  const Quadratic beyond_s = projected_dot(pq, difference(x0, x1, q, s), a);
+  const Quadratic before_r = projected_dot(pq, difference(x0, x1, p, r), a);
+  const Quadratic before_s = projected_dot(pq, difference(x0, x1, p, s), a);
   return holds_piecewise(
       [&](double lo, double hi) {
-        const int r_sign = side_r.sign_on(lo, hi);
-        if (r_sign != 0 && r_sign == side_s.sign_on(lo, hi)) return true;
-        const int p_sign = side_p.sign_on(lo, hi);
-        return p_sign != 0 && p_sign == side_q.sign_on(lo, hi);
+        if (by_sides(lo, hi)) return true;
+        if (beyond_r.sign_on(lo, hi) > 0 && beyond_s.sign_on(lo, hi) > 0) return true;
+        return before_r.sign_on(lo, hi) < 0 && before_s.sign_on(lo, hi) < 0;
       },
       kMaxDepth);
 }
