@@ -131,5 +131,43 @@ TEST(DirectionMask, DegenerateOverflowingOrBatchedTrianglesAreHandled) {
   EXPECT_EQ(both, up & direction_mask(zero, y, x, zero, y, x));
 }
 
+TEST(DirectionMask, TwoAndFourLanePathsAgreeBitForBit) {
+  // Batches of 1-16 random triangles over many scales and motions (near-degenerate and
+  // overflowing ones too): the SSE2 and AVX2 paths of the dispatch give the same mask,
+  // which is the and of the single-triangle masks.
+  if (!detail::direction_mask_has_four_lanes()) GTEST_SKIP() << "no AVX2 on this processor";
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  std::uniform_int_distribution<int> count_of(1, MovingTriangleBatch::kCapacity);
+  int nonzero = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const double scale = std::ldexp(1.0, (trial % 40) * 30 - 600);
+    const double motion = trial % 3 == 0 ? 1e-3 : trial % 3 == 1 ? 0.3 : 2.0;
+    MovingTriangleBatch batch;
+    DirectionMask expected = kAllDirections;
+    const int count = count_of(rng);
+    const Vec3 shared = Vec3(uniform(rng), uniform(rng), 1);  // a common tilt: masks survive
+    for (int i = 0; i < count; ++i) {
+      std::array<Vec3, 6> c;
+      c[0] = scale * Vec3(uniform(rng), uniform(rng), uniform(rng));
+      c[1] = c[0] + scale * Vec3(1, 0, 0.1 * uniform(rng));
+      c[2] = c[0] + scale * (shared.cross(Vec3(1, 0, 0)).cross(shared).normalized() * -1 +
+                             0.1 * Vec3(uniform(rng), uniform(rng), uniform(rng)));
+      if (trial % 50 == 0) c[2] = c[0] + 2 * (c[1] - c[0]);  // degenerate
+      for (int k = 0; k < 3; ++k) {
+        c[3 + k] = c[k] + motion * scale * Vec3(uniform(rng), uniform(rng), uniform(rng));
+      }
+      batch.add(c[0].data(), c[1].data(), c[2].data(), c[3].data(), c[4].data(), c[5].data());
+      expected &= direction_mask(c[0], c[1], c[2], c[3], c[4], c[5]);
+    }
+    batch.pad();
+    const DirectionMask two = detail::direction_mask_two_lanes(batch);
+    ASSERT_EQ(two, detail::direction_mask_four_lanes(batch)) << "trial " << trial;
+    ASSERT_EQ(two, expected) << "trial " << trial;
+    nonzero += two != 0;
+  }
+  EXPECT_GT(nonzero, 500);  // the comparison is not only of empty masks
+}
+
 }  // namespace
 }  // namespace tailor
