@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <map>
 #include <numeric>
 
 #include "tailor/geometry/coplanarity_sign.hpp"
@@ -13,60 +12,71 @@ namespace tailor {
 namespace {
 
 // Boundary loops of a face set, or false if it is not edge-manifold, consistently
-// oriented, edge-connected, with each boundary vertex on one loop once.
+// oriented, edge-connected, with each boundary vertex on one loop once. Sorted arrays, not
+// maps: a sleeve cluster holds hundreds of thousands of faces.
 bool cluster_loops(const TriangleMesh& mesh, const std::vector<Index>& faces,
                    std::vector<std::vector<Index>>& loops) {
-  std::map<Index, std::vector<std::pair<Index, Index>>> edge_uses;  // edge -> (from, to)
-  for (Index f : faces) {
+  struct Use {
+    Index edge, from, to, slot;  // a face's directed edge, and the face's slot in `faces`
+  };
+  std::vector<Use> uses;
+  uses.reserve(3 * faces.size());
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const Index f = faces[i];
     const auto edges = mesh.face_edges(f);
     for (int k = 0; k < 3; ++k) {
-      edge_uses[edges[k]].push_back({mesh.faces()(f, k), mesh.faces()(f, (k + 1) % 3)});
+      uses.push_back(
+          {edges[k], mesh.faces()(f, k), mesh.faces()(f, (k + 1) % 3), static_cast<Index>(i)});
     }
   }
-  std::map<Index, Index> next;  // boundary half-edges, from -> to
-  for (const auto& [edge, uses] : edge_uses) {
-    if (uses.size() > 2) return false;
-    if (uses.size() == 2) {
-      if (uses[0].first != uses[1].second) return false;  // inconsistent orientation
-    } else if (!next.emplace(uses[0].first, uses[0].second).second) {
-      return false;  // a vertex on the boundary twice
-    }
-  }
-  // Edge-connectedness of the faces (ghost fans keep each loop's faces together).
-  std::map<Index, Index> face_slot;
-  for (std::size_t i = 0; i < faces.size(); ++i) face_slot[faces[i]] = static_cast<Index>(i);
+  std::sort(uses.begin(), uses.end(), [](const Use& a, const Use& b) {
+    return a.edge != b.edge ? a.edge < b.edge : a.slot < b.slot;
+  });
+  // Each edge used once (boundary) or twice in opposite directions; faces sharing an edge
+  // are joined (edge-connectedness: ghost fans keep each loop's faces together).
+  std::vector<std::pair<Index, Index>> boundary;  // half-edges (from, to)
   std::vector<Index> parent(faces.size());
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](Index i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
   };
-  for (const auto& [edge, uses] : edge_uses) {
-    const auto around = mesh.edge_faces(edge);
-    Index first = -1;
-    for (Index f : around) {
-      auto it = face_slot.find(f);
-      if (it == face_slot.end()) continue;
-      if (first < 0)
-        first = it->second;
-      else
-        parent[find(it->second)] = find(first);
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t end = i + 1;
+    while (end < uses.size() && uses[end].edge == uses[i].edge) ++end;
+    if (end - i > 2) return false;
+    if (end - i == 2) {
+      if (uses[i].from != uses[i + 1].to) return false;  // inconsistent orientation
+      parent[find(uses[i + 1].slot)] = find(uses[i].slot);
+    } else {
+      boundary.push_back({uses[i].from, uses[i].to});
     }
+    i = end;
   }
+  uses = {};
   for (std::size_t i = 0; i < faces.size(); ++i) {
     if (find(static_cast<Index>(i)) != find(0)) return false;
   }
+  std::sort(boundary.begin(), boundary.end());
+  for (std::size_t i = 1; i < boundary.size(); ++i) {
+    if (boundary[i].first == boundary[i - 1].first) return false;  // a vertex on it twice
+  }
+  // Loops in order of their smallest vertex, each starting there.
   loops.clear();
-  while (!next.empty()) {
+  std::vector<char> used(boundary.size(), 0);
+  for (std::size_t first = 0; first < boundary.size(); ++first) {
+    if (used[first]) continue;
     std::vector<Index> loop;
-    const Index start = next.begin()->first;
+    const Index start = boundary[first].first;
     Index v = start;
     do {
       loop.push_back(v);
-      auto it = next.find(v);
-      if (it == next.end()) return false;  // open chain
+      const auto it = std::lower_bound(boundary.begin(), boundary.end(), std::pair{v, Index{-1}});
+      if (it == boundary.end() || it->first != v) return false;  // open chain
+      const auto k = static_cast<std::size_t>(it - boundary.begin());
+      if (used[k]) return false;
+      used[k] = 1;
       v = it->second;
-      next.erase(it);
     } while (v != start);
     loops.push_back(std::move(loop));
   }

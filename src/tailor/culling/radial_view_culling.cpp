@@ -42,29 +42,36 @@ RadialViewCulling::RadialViewCulling(const TriangleMesh& mesh, const Positions& 
   m_slot.resize(static_cast<std::size_t>(n));
   m_cluster_vertices.resize(static_cast<std::size_t>(n));
   m_local_faces.resize(static_cast<std::size_t>(n));
-  std::vector<Index> local(static_cast<std::size_t>(mesh.num_vertices()), -1);
   for (Index c = 0; c < n; ++c) {
     if (!m_clusters.usable(c)) continue;
     m_usable |= std::uint64_t{1} << c;
     const auto& faces = m_clusters.faces(c);
     m_slot[c].assign(static_cast<std::size_t>(mesh.num_faces()), -1);
-    std::vector<Index>& vertices = m_cluster_vertices[c];
-    for (std::size_t i = 0; i < faces.size(); ++i) {
-      m_slot[c][faces[i]] = static_cast<Index>(i);
-      std::array<Index, 3> corners{};
-      for (int k = 0; k < 3; ++k) {
-        const Index v = mesh.faces()(faces[i], k);
-        if (local[v] < 0) {
-          local[v] = static_cast<Index>(vertices.size());
-          vertices.push_back(v);
-        }
-        corners[k] = local[v];
-      }
-      m_local_faces[c].push_back(corners);
-    }
-    for (Index v : vertices) local[v] = -1;
+    for (std::size_t i = 0; i < faces.size(); ++i) m_slot[c][faces[i]] = static_cast<Index>(i);
   }
-  m_clean_mask.assign(static_cast<std::size_t>(mesh.num_faces()), 0);
+}
+
+void RadialViewCulling::build_local_faces(Index c) {
+  const FaceArray& all_faces = m_clusters.mesh().faces();
+  const auto& faces = m_clusters.faces(c);
+  std::vector<Index>& vertices = m_cluster_vertices[c];
+  vertices.clear();
+  vertices.reserve(3 * faces.size());
+  for (Index f : faces) {
+    for (int k = 0; k < 3; ++k) vertices.push_back(all_faces(f, k));
+  }
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  vertices.shrink_to_fit();
+  std::vector<std::array<Index, 3>>& local = m_local_faces[c];
+  local.resize(faces.size());
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      local[i][k] = static_cast<Index>(
+          std::lower_bound(vertices.begin(), vertices.end(), all_faces(faces[i], k)) -
+          vertices.begin());
+    }
+  }
 }
 
 RadialViewCounts RadialViewCulling::classify(const Positions& x0, const Positions& x1,
@@ -78,7 +85,7 @@ void RadialViewCulling::begin_step(const Positions& x0, const Positions& x1, boo
   m_x1 = &x1;
   m_find_clean = find_clean;
   m_wanted = 0;
-  if (m_clean_mask_dirty) std::fill(m_clean_mask.begin(), m_clean_mask.end(), 0);
+  if (m_clean_mask_dirty) m_clean_mask.assign(m_clean_mask.size(), 0);
   m_clean_mask_dirty = false;
   for (Index c = 0; c < m_clusters.num_clusters(); ++c) {
     ClusterState& state = m_state[c];
@@ -145,6 +152,7 @@ RadialViewCounts RadialViewCulling::classify_clusters(std::uint64_t clusters) {
     const auto& faces = m_clusters.faces(c);
     for (std::size_t i = 0; i < state.face_sign.size(); ++i) {
       if (state.face_sign[i] == 2) {
+        if (m_clean_mask.empty()) m_clean_mask.assign(m_clusters.mesh().num_faces(), 0);
         m_clean_mask[faces[i]] |= std::uint64_t{1} << c;
         m_clean_mask_dirty = true;
       }
@@ -250,6 +258,7 @@ void RadialViewCulling::classify_cluster(Index c) {
 
   // View cones of the faces (from directions to the vertices, shared by the faces around
   // each vertex) and of the ghost triangles.
+  if (m_local_faces[c].empty()) build_local_faces(c);
   const std::vector<Index>& vertices = m_cluster_vertices[c];
   state.unit0.resize(vertices.size());
   state.unit1.resize(vertices.size());

@@ -125,7 +125,8 @@ class RadialViewCulling {
   /// Whether f or g is clean in a cluster they share (after classify() or
   /// classify_wanted()).
   bool classified_clean(Index f, Index g) const {
-    return ((m_clean_mask[f] | m_clean_mask[g]) & shared_clusters(f, g)) != 0;
+    return !m_clean_mask.empty() &&
+           ((m_clean_mask[f] | m_clean_mask[g]) & shared_clusters(f, g)) != 0;
   }
 
   /// Whether the pair of faces (f, g) cannot collide over the classified step.
@@ -136,7 +137,7 @@ class RadialViewCulling {
   std::int64_t cull(std::vector<TrianglePair>& pairs) const;
 
   /// Bit c set when face `f` is clean in cluster c over the classified step.
-  std::uint64_t clean_mask(Index f) const { return m_clean_mask[f]; }
+  std::uint64_t clean_mask(Index f) const { return m_clean_mask.empty() ? 0 : m_clean_mask[f]; }
   /// Per face of cluster `c` (in clusters().faces(c) order), over the classified step: -1
   /// negative, 0 undetermined, 1 positive, 2 positive and clean (all 0 when the cluster's
   /// winding number is not ±1; empty when the cluster is not usable or was not classified
@@ -168,6 +169,7 @@ class RadialViewCulling {
   // whose classification could still cull the pair.
   bool separated_in(Index f, Index g, std::uint64_t clusters, std::uint64_t* wanted) const;
   RadialViewCounts classify_clusters(std::uint64_t clusters);
+  void build_local_faces(Index c);
   void classify_cluster(Index c);
   void find_clean_faces(Index c, const std::vector<std::size_t>& blocking,
                         const std::vector<ViewCone>& ghost_cones);
@@ -175,6 +177,7 @@ class RadialViewCulling {
   RadialViewClusters m_clusters;
   // mutable: raw signs are a per-step cache filled by const queries.
   mutable std::vector<ClusterState> m_state;
+  // Per face (empty until some face is clean: most steps of a sleeve never need it).
   std::vector<std::uint64_t> m_clean_mask;
   bool m_clean_mask_dirty = false;  // some bit set since it was last cleared
   std::uint64_t m_usable = 0;       // bit c: cluster c is usable
@@ -182,7 +185,8 @@ class RadialViewCulling {
   // Clusters to classify (lazy way); updated through std::atomic_ref (keeps the class
   // movable).
   alignas(std::atomic_ref<std::uint64_t>::required_alignment) std::uint64_t m_wanted = 0;
-  // Per cluster: its vertices, and each face's three vertices as indices into them.
+  // Per cluster: its vertices, and each face's three vertices as indices into them (built
+  // when clean faces are first wanted in the cluster).
   std::vector<std::vector<Index>> m_cluster_vertices;
   std::vector<std::vector<std::array<Index, 3>>> m_local_faces;
   // Position of face f within clusters().faces(c), per cluster; -1 if not a member.
