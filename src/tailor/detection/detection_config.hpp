@@ -20,6 +20,11 @@ struct DetectionConfig {
   bool projection_filter = true;   ///< projection filter (candidates/projection_filter.hpp)
   bool radial_view = true;         ///< radial-view culling where observers are given
   int threads = 0;                 ///< 0: all hardware threads
+  /// Radial view: classify every cluster each step, as the paper does, instead of only the
+  /// clusters a kept pair needs (radial_view_culling.hpp). The same pairs are culled either
+  /// way; this only fills the statistics radial_positive / negative / undetermined of
+  /// every step, at the cost of the O(faces) classification the lazy way avoids.
+  bool classify_every_cluster = false;
   /// Copy the step's candidate triangle pairs into DetectionResult (for pictures and
   /// viewers; off by default because it costs memory at scale).
   bool keep_candidate_pairs = false;
