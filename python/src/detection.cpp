@@ -176,6 +176,9 @@ void bind_detection(py::module_& m) {
       .def_readwrite("primitive_boxes", &DetectionConfig::primitive_boxes)
       .def_readwrite("coplanarity_filter", &DetectionConfig::coplanarity_filter)
       .def_readwrite("radial_view", &DetectionConfig::radial_view)
+      .def_readwrite("classify_every_cluster", &DetectionConfig::classify_every_cluster,
+                     "Radial view: classify every cluster each step (fills the statistics "
+                     "radial_positive / negative / undetermined; same collisions, more work).")
       .def_readwrite("threads", &DetectionConfig::threads)
       .def("__repr__", [](const DetectionConfig& c) {
         const auto flag = [](bool on) { return on ? "True" : "False"; };

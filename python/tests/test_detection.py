@@ -132,6 +132,14 @@ def test_radial_view_with_the_sleeve_observers_equals_brute_force():
     result = tailor.detect(mesh, x0, x1, observers=simulation.observer_loops)
     assert_same_collisions(result, oracle)
     assert result.stats["radial_pairs_culled"] > 0, "radial view culled nothing"
+    # Classifying every cluster culls the same pairs and fills the classification counts.
+    config = tailor.DetectionConfig.preset("paper")
+    config.classify_every_cluster = True
+    every = tailor.detect(mesh, x0, x1, method=config, observers=simulation.observer_loops)
+    assert_same_collisions(every, oracle)
+    assert every.stats["radial_pairs_culled"] == result.stats["radial_pairs_culled"]
+    assert every.stats["radial_positive"] + every.stats["radial_negative"] + \
+        every.stats["radial_undetermined"] > 0, "no cluster classified"
 
 
 def test_detector_buffers_are_used_in_place_and_copies_are_counted():
