@@ -8,6 +8,7 @@
 #include <bit>
 #include <optional>
 
+#include "tailor/culling/moving_plane.hpp"
 #include "tailor/culling/winding_number.hpp"
 #include "tailor/geometry/coplanarity_sign.hpp"
 

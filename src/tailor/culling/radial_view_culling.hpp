@@ -59,7 +59,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "tailor/culling/moving_plane.hpp"
 #include "tailor/culling/radial_view.hpp"
 #include "tailor/culling/triangle_pair.hpp"
 #include "tailor/culling/view_cone.hpp"
