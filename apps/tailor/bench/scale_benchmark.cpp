@@ -219,8 +219,7 @@ std::string scale_markdown(const std::vector<ScaleRow>& rows) {
   for (const ScaleRow& r : rows) {
     md += fmt::format(
         "| {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | "
-        "{} "
-        "| {} | {} | {:.2f} | {:.0f} |\n",
+        "{} | {} | {} | {:.2f} | {:.0f} |\n",
         r.scene, r.threads, with_commas(r.triangles), r.floor_ms, r.refit_ms, r.traversal_ms,
         r.radial_view_ms, r.low_level_ms, r.ccd_ms, r.total_ms, r.total_ms - r.ccd_ms,
         with_commas(r.ctps), with_commas(r.vf + r.ee), with_commas(r.collisions),

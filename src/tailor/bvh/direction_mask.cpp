@@ -1,10 +1,8 @@
 #include "tailor/bvh/direction_mask.hpp"
 
-#include "tailor/bvh/lane_vectors.hpp"
-
 #include <cstdint>
-#include <cstring>
-#include <limits>
+
+#include "tailor/bvh/lane_vectors.hpp"
 
 namespace tailor {
 namespace {

@@ -116,7 +116,8 @@ signed char RadialViewCulling::raw_sign(Index c, Index f) const {
   return raw;
 }
 
-RadialViewCounts RadialViewCulling::classify_wanted() {
+RadialViewCounts RadialViewCulling::classify_wanted(bool every_cluster) {
+  if (every_cluster) return classify_clusters(m_usable);
   std::uint64_t wanted = m_wanted;
   if (!m_find_clean) {
     // Only certification can cull here, and it needs every raw sign equal and nonzero: two

@@ -118,9 +118,11 @@ class RadialViewCulling {
   /// begun. When it answers false, remembers the shared clusters whose classification
   /// could still cull the pair. Safe to call from several threads at once.
   bool edge_planes_separate(Index f, Index g);
-  /// Classifies the clusters remembered by edge_planes_separate() since begin_step()
-  /// (parallel over clusters); the counts cover those clusters only.
-  RadialViewCounts classify_wanted();
+  /// Classifies the clusters remembered by edge_planes_separate() since begin_step(), or
+  /// every usable cluster when `every_cluster` (for the counts of all of them; the pairs
+  /// culled are the same) (parallel over clusters); the counts cover the clusters
+  /// classified.
+  RadialViewCounts classify_wanted(bool every_cluster = false);
   /// Whether f or g is clean in a cluster they share (after classify() or
   /// classify_wanted()).
   bool classified_clean(Index f, Index g) const {

@@ -81,21 +81,13 @@ struct SelfCollisionDetector::Impl {
   void radial_view_cull(const Positions& x0, const Positions& x1, DetectionStats& stats) {
     if (!use_radial_view || traversal.size() == 0) return;
     // Clean faces matter only where candidates may share a vertex (radial_view_culling.hpp).
-    const bool find_clean = !config.adjacency_culling;
-    RadialViewCounts counts;
-    if (config.classify_every_cluster) {
-      counts = radial.classify(x0, x1, find_clean);
-      stats.radial_pairs_culled = traversal.remove_if(
-          [&](const TrianglePair& p) { return radial.pair_culled(p.first, p.second); });
-    } else {
-      radial.begin_step(x0, x1, find_clean);
-      stats.radial_pairs_culled = traversal.remove_if(
-          [&](const TrianglePair& p) { return radial.edge_planes_separate(p.first, p.second); });
-      counts = radial.classify_wanted();
-      if (counts.clusters_used > 0) {
-        stats.radial_pairs_culled += traversal.remove_if(
-            [&](const TrianglePair& p) { return radial.classified_clean(p.first, p.second); });
-      }
+    radial.begin_step(x0, x1, !config.adjacency_culling);
+    stats.radial_pairs_culled = traversal.remove_if(
+        [&](const TrianglePair& p) { return radial.edge_planes_separate(p.first, p.second); });
+    const RadialViewCounts counts = radial.classify_wanted(config.classify_every_cluster);
+    if (counts.clusters_used > 0) {
+      stats.radial_pairs_culled += traversal.remove_if(
+          [&](const TrianglePair& p) { return radial.classified_clean(p.first, p.second); });
     }
     stats.clusters_classified = counts.clusters_classified;
     stats.clusters_certified = counts.clusters_certified;
