@@ -33,6 +33,7 @@ write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/tailorConfigVersion
                                  COMPATIBILITY SameMinorVersion)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/tailorConfig.cmake
               ${CMAKE_CURRENT_BINARY_DIR}/tailorConfigVersion.cmake
+              ${CMAKE_CURRENT_SOURCE_DIR}/cmake/FindCHOLMOD.cmake
         DESTINATION ${TAILOR_INSTALL_CMAKEDIR})
 
 # The consumer test: install this build into a scratch prefix, then configure, build and

@@ -148,6 +148,10 @@ TEST(ClothModel, HangingSheetWeftDown) {
   run_hanging_sheet(ClothSolver::direct, 5, sanitized() ? 30 : 90, true);
 }
 
+TEST(ClothModel, HangingSheetSupernodalSolver) {
+  run_hanging_sheet(ClothSolver::supernodal, 5, sanitized() ? 30 : 90);
+}
+
 TEST(ClothModel, HangingSheetConjugateGradient) {
   run_hanging_sheet(ClothSolver::iterative, 5, sanitized() ? 30 : 90);
 }

@@ -3,6 +3,8 @@
 /// The linear solver of the implicit cloth step: one symmetric positive definite system per
 /// substep, always with the same sparsity pattern.
 
+#include <memory>
+
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -13,14 +15,17 @@ namespace tailor {
 
 /// Linear solver of the implicit step.
 enum class ClothSolver {
-  automatic,  ///< direct up to ClothLinearSolver::kDirectSolveLimit unknowns, else iterative
-  direct,     ///< sparse simplicial LDLᵀ Cholesky, Eigen, factorised every step (exact)
-  iterative,  ///< conjugate gradient, block-Jacobi preconditioner, warm-started
+  automatic,   ///< direct below ClothLinearSolver::kSupernodalFrom unknowns, supernodal up
+               ///< to ClothLinearSolver::kDirectSolveLimit, else iterative
+  direct,      ///< sparse simplicial LDLᵀ Cholesky, Eigen, factorised every step (exact)
+  supernodal,  ///< supernodal LLᵀ Cholesky, CHOLMOD, factorised every step (exact)
+  iterative,   ///< conjugate gradient, block-Jacobi preconditioner, warm-started
 };
 
 /// What one solve did.
 struct LinearSolveInfo {
   bool factorized = false;  ///< solved by Cholesky factorisation (false: CG)
+  bool supernodal = false;  ///< the factorisation was CHOLMOD's supernodal one
   int iterations = 0;       ///< CG iterations (0 for the factorisation)
   bool ok = false;          ///< false if the solve failed (not SPD, not finite)
 };
@@ -37,9 +42,17 @@ class ClothLinearSolver {
  public:
   using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
-  /// Systems with at most this many unknowns use a factorisation (reused or not), larger
-  /// ones block-Jacobi CG.
+  /// Systems with at most this many unknowns use a factorisation, larger ones
+  /// block-Jacobi CG.
   static constexpr Eigen::Index kDirectSolveLimit = 60000;
+  /// From this many unknowns on, `automatic` factorises with CHOLMOD's supernodal LLᵀ
+  /// instead of Eigen's simplicial LDLᵀ. Measured on the sleeve's own systems (one
+  /// thread, OpenBLAS, factorisation + solve): 2,079 unknowns (default sleeve) Eigen
+  /// 1.9 ms, CHOLMOD 4.5; 20,592 (10× sleeve) Eigen 121 ms, CHOLMOD 68 (METIS ordering).
+  static constexpr Eigen::Index kSupernodalFrom = 8000;
+
+  ClothLinearSolver();
+  ~ClothLinearSolver();
 
   /// Chooses the method and, for block-Jacobi CG, the relative residual to reach.
   void set_method(ClothSolver method, double cg_tolerance);
@@ -51,16 +64,20 @@ class ClothLinearSolver {
  private:
   // Factorises A (the symbolic analysis once) and solves; false when A is not SPD.
   bool factorize_and_solve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x);
+  // The same with CHOLMOD's supernodal LLᵀ.
+  bool supernodal_solve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x);
 
   ClothSolver m_method = ClothSolver::automatic;
   double m_cg_tolerance = 1e-6;
-  // Simplicial sparse LDLᵀ (Eigen, AMD ordering). Measured (elbow, one thread, ms per
-  // substep) against CHOLMOD with Debian's reference BLAS: Eigen LLᵀ 2.5 vs CHOLMOD
-  // supernodal 5.3 and simplicial 3.0 on the default 2,079 unknowns, 108 vs 128 and 162 on
-  // the 10x sleeve's 20,790; LDLᵀ (no square roots) about 10 % below LLᵀ.
+  // Simplicial sparse LDLᵀ (Eigen, AMD ordering): below kSupernodalFrom it beats
+  // CHOLMOD's supernodal and simplicial factorisations (their setup per call outweighs the
+  // dense kernels on small fronts); LDLᵀ (no square roots) is about 10 % below LLᵀ.
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> m_cholesky;
   bool m_analyzed = false;
   Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, BlockJacobi> m_jacobi_cg;
+  // CHOLMOD's state behind a pointer: cholmod.h stays out of the public headers.
+  struct Supernodal;
+  std::unique_ptr<Supernodal> m_supernodal;
 };
 
 }  // namespace tailor
