@@ -93,7 +93,7 @@ TEST(ClothLinearSolver, FactorisationsRefuseIndefiniteMatrices) {
 
 TEST(ClothLinearSolver, AutomaticPicksByTheNumberOfUnknowns) {
   std::mt19937 rng(3);
-  ClothLinearSolver solver;  // automatic
+  ClothLinearSolver solver;                              // automatic
   const SparseMatrix small = grid_system(10, rng, 1.0);  // 300 unknowns
   Eigen::VectorXd b = Eigen::VectorXd::Ones(small.rows()), x = Eigen::VectorXd::Zero(small.rows());
   LinearSolveInfo info = solver.solve(small, b, x);
