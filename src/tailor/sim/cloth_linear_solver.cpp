@@ -9,8 +9,9 @@ struct ClothLinearSolver::Supernodal {
   bool analyzed = false;
 
   Supernodal() {
-    // Nested dissection (METIS) has less fill than AMD on the sleeve's tube-shaped mesh:
-    // 68 instead of 81 ms per factorisation of the 10× sleeve's 20,592 unknowns.
+    // The analysis tries AMD and nested dissection (METIS) and keeps the sparser factor:
+    // on the 10× sleeve's tube-shaped mesh METIS gives 1.21 M entries in L and 2.0e8
+    // flops per factorisation against AMD's 1.48 M and 3.7e8.
     cholmod_common& c = cholesky.cholmod();
     c.nmethods = 2;
     c.method[0].ordering = CHOLMOD_AMD;
