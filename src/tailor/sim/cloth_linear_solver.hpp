@@ -47,8 +47,8 @@ class ClothLinearSolver {
   static constexpr Eigen::Index kDirectSolveLimit = 60000;
   /// From this many unknowns on, `automatic` factorises with CHOLMOD's supernodal LLᵀ
   /// instead of Eigen's simplicial LDLᵀ. Measured on the sleeve's own systems (OpenBLAS
-  /// with one or two threads, factorisation + solve, best of 5-50): 2,079 unknowns (default sleeve) Eigen
-  /// 1.9 ms, CHOLMOD 4.3-5.4; 20,592 (10× sleeve) Eigen 121 ms, CHOLMOD 57-82.
+  /// with one or two threads, factorisation + solve, best of 5-50): 2,079 unknowns (default sleeve)
+  /// Eigen 1.9 ms, CHOLMOD 4.3-5.4; 20,592 (10× sleeve) Eigen 121 ms, CHOLMOD 57-82.
   static constexpr Eigen::Index kSupernodalFrom = 8000;
 
   ClothLinearSolver();
