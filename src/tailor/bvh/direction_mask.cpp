@@ -77,7 +77,9 @@ template <int W>
 template <int W>
 [[gnu::always_inline]] inline DirectionMask batch_mask(const MovingTriangleBatch& batch) {
   typename Vectors<W>::Bits masks = lane_masks<W>(batch, 0);
-  for (int first = W; first < kLanes; first += W) masks &= lane_masks<W>(batch, first);
+  for (int first = W; first < batch.padded_count(); first += W) {
+    masks &= lane_masks<W>(batch, first);
+  }
   std::int64_t all = kAllDirections;
   for (int i = 0; i < W; ++i) all &= masks[i];
   return static_cast<DirectionMask>(all);

@@ -72,11 +72,14 @@ struct MovingTriangleBatch {
     }
     ++count;
   }
-  /// Fills the lanes past `count` with copies of lane 0 (count >= 1), so that loops run
-  /// over all kCapacity lanes (fixed trip counts vectorise) without changing any result.
+  /// Number of lanes the kernels read: count rounded up to a multiple of four (the widest
+  /// kernel), so that a batch of a few triangles costs a few lanes, not kCapacity.
+  int padded_count() const { return (count + 3) & ~3; }
+  /// Fills the lanes from `count` to padded_count() with copies of lane 0 (count >= 1), so
+  /// that kernels run over whole vectors without changing any result.
   void pad() {
     for (int row = 0; row < 18; ++row) {
-      for (int i = count; i < kCapacity; ++i) coordinate[row][i] = coordinate[row][0];
+      for (int i = count; i < padded_count(); ++i) coordinate[row][i] = coordinate[row][0];
     }
   }
 };

@@ -93,6 +93,8 @@ class MeshBvh {
   void refit_group(const Group& group, const Positions& x0, const Positions& x1,
                    bool with_directions);
   void merge(Index node, bool with_directions);
+  // Sets an inner node's box to the union of its children's.
+  void join_children(Index node);
 
   const TriangleMesh* m_mesh = nullptr;
   std::vector<Index> m_faces;
@@ -101,12 +103,9 @@ class MeshBvh {
   std::vector<DirectionMask> m_masks;
   std::vector<std::array<Index, 3>> m_leaf_vertices;  // in leaf order, for a coherent refit
   std::vector<Group> m_groups;                        // increasing root id
-  // Node ids of every group's leaves (indexed like m_leaf_vertices) and inner nodes
-  // (size - 1 per group, from first_leaf - index), each in increasing id order.
-  std::vector<Index> m_group_leaf_nodes, m_group_inner_nodes;
-  std::vector<Index> m_merge_nodes;  // increasing id
-  std::vector<Task> m_tasks;         // disjoint subtrees
-  std::vector<Index> m_top_merges;   // merge nodes above the tasks, decreasing
+  std::vector<Index> m_merge_nodes;                   // increasing id
+  std::vector<Task> m_tasks;                          // disjoint subtrees
+  std::vector<Index> m_top_merges;                    // merge nodes above the tasks, decreasing
 };
 
 }  // namespace tailor

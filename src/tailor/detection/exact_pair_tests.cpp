@@ -37,8 +37,8 @@ void sort_unique(std::vector<T>& items) {
 
 void ExactPairTester::begin_step() {
   for (ThreadOutput& out : m_outputs) {
-    out.collisions.vertex_face.clear();
-    out.collisions.edge_edge.clear();
+    out.vertex_face.clear();
+    out.edge_edge.clear();
     out.exact = 0;
   }
 }
@@ -57,7 +57,7 @@ void ExactPairTester::test(const TriangleMesh& mesh, const Positions& x0, const 
           const CcdResult result = vertex_face_ccd({x0.row(v), x0.row(a), x0.row(b), x0.row(c),
                                                     x1.row(v), x1.row(a), x1.row(b), x1.row(c)});
           out.exact += result.path == CcdPath::exact || result.path == CcdPath::gmp;
-          if (result.hit) out.collisions.vertex_face.push_back({v, f, result.toi});
+          if (result.hit) out.vertex_face.push_back({v, f, result.toi});
         }
       });
   tbb::parallel_for(
@@ -71,30 +71,29 @@ void ExactPairTester::test(const TriangleMesh& mesh, const Positions& x0, const 
                                                   x1.row(a), x1.row(b), x1.row(c), x1.row(d)});
           out.exact += result.path == CcdPath::exact || result.path == CcdPath::gmp;
           if (result.hit) {
-            out.collisions.edge_edge.push_back(make_edge_edge(edges, e1, e2, result.toi));
+            out.edge_edge.push_back(make_edge_edge(edges, e1, e2, result.toi));
           }
         }
       });
 }
 
 CollisionSet ExactPairTester::take_collisions() {
-  // Append into the largest buffer, moved out; the others are released.
   CollisionSet all;
-  auto gather = [&](auto member) {
-    auto& result = all.*member;
+  auto gather = [&](auto result_member, auto thread_member) {
+    auto& result = all.*result_member;
+    std::size_t total = 0;
+    for (const ThreadOutput& out : m_outputs) total += (out.*thread_member).size();
+    result.reserve(total);
     for (ThreadOutput& out : m_outputs) {
-      auto& mine = out.collisions.*member;
-      if (mine.size() > result.size()) std::swap(mine, result);
-    }
-    for (ThreadOutput& out : m_outputs) {
-      auto& mine = out.collisions.*member;
-      result.insert(result.end(), mine.begin(), mine.end());
+      auto& mine = out.*thread_member;
+      // Front to back, so that each block is freed once copied.
+      for (; !mine.empty(); mine.pop_front()) result.push_back(mine.front());
       std::remove_reference_t<decltype(mine)>().swap(mine);
     }
     sort_unique(result);
   };
-  gather(&CollisionSet::vertex_face);
-  gather(&CollisionSet::edge_edge);
+  gather(&CollisionSet::vertex_face, &ThreadOutput::vertex_face);
+  gather(&CollisionSet::edge_edge, &ThreadOutput::edge_edge);
   return all;
 }
 

@@ -5,6 +5,7 @@
 #include <tbb/enumerable_thread_specific.h>
 
 #include <cstdint>
+#include <deque>
 #include <span>
 
 #include "tailor/candidates/primitive_pair.hpp"
@@ -14,8 +15,10 @@
 namespace tailor {
 
 /// Runs the exact CCD (vertex_face_ccd / edge_edge_ccd) on batches of candidate pairs in
-/// parallel blocks and gathers the collisions of a step in per-thread buffers that keep
-/// their memory between steps.
+/// parallel blocks and gathers the collisions of a step in per-thread block lists
+/// (std::deque): they grow without the overshoot of a doubling vector, and the blocks are
+/// freed as take_collisions() copies them out, so a contact-heavy step (about one
+/// collision per triangle) holds its collisions about once, not up to four times.
 class ExactPairTester {
  public:
   /// Starts a step: no collisions, no counts.
@@ -25,14 +28,15 @@ class ExactPairTester {
             std::span<const VertexFacePair> vertex_face, std::span<const EdgeEdgePair> edge_edge);
   /// Hands over the collisions since begin_step(), sorted and without duplicates, so the
   /// result does not depend on the batches, their order or the thread count. The
-  /// per-thread buffers are moved into the result (it is the step's output), not copied.
+  /// per-thread blocks are released as they are copied into the result.
   CollisionSet take_collisions();
   /// Queries since begin_step() that the exact path decided.
   std::int64_t exact_fallbacks() const;
 
  private:
   struct ThreadOutput {
-    CollisionSet collisions;
+    std::deque<VertexFaceCollision> vertex_face;
+    std::deque<EdgeEdgeCollision> edge_edge;
     std::int64_t exact = 0;
   };
   tbb::enumerable_thread_specific<ThreadOutput> m_outputs;

@@ -1,0 +1,84 @@
+#include "tailor/bvh/batch_bounds.hpp"
+
+#include <cstring>
+#include <limits>
+
+#include "tailor/bvh/lane_vectors.hpp"
+
+namespace tailor {
+namespace {
+
+constexpr double kFloatMax = std::numeric_limits<float>::max();
+
+template <int W>
+struct FloatLanes;
+template <>
+struct FloatLanes<2> {
+  using type = float __attribute__((vector_size(8)));
+};
+template <>
+struct FloatLanes<4> {
+  using type = float __attribute__((vector_size(16)));
+};
+
+// Per lane, a float <= x (float_at_most, float_box.hpp) clamped to the float range, without
+// branches: x - |x|·2^-23 - 2^-149 is below x by more than half a float ulp, so rounding it
+// to the nearest float cannot land above x.
+template <int W>
+[[gnu::always_inline]] inline typename FloatLanes<W>::type float_below(
+    typename lanes::Vectors<W>::Lanes x) {
+  using Lanes = typename lanes::Vectors<W>::Lanes;
+  const Lanes top = Lanes{} + kFloatMax;
+  Lanes nudged = x - lanes::abs(x) * 0x1p-23 - 0x1p-149;
+  nudged = top < nudged ? top : nudged;
+  nudged = nudged < -top ? -top : nudged;
+  return __builtin_convertvector(nudged, typename FloatLanes<W>::type);
+}
+
+template <int W>
+[[gnu::always_inline]] inline void bounds(const MovingTriangleBatch& batch, BatchBounds& out) {
+  using Lanes = typename lanes::Vectors<W>::Lanes;
+  const auto& c = batch.coordinate;
+  const int lanes_used = batch.padded_count();
+  for (int k = 0; k < 3; ++k) {
+    for (int i = 0; i < lanes_used; i += W) {
+      Lanes lo = lanes::load<W>(c[k] + i), hi = lo;
+      for (int corner = 1; corner < 6; ++corner) {
+        const Lanes x = lanes::load<W>(c[3 * corner + k] + i);
+        lo = x < lo ? x : lo;
+        hi = hi < x ? x : hi;
+      }
+      const auto below = float_below<W>(lo), above = -float_below<W>(-hi);
+      std::memcpy(&out.low[k][i], &below, sizeof below);
+      std::memcpy(&out.high[k][i], &above, sizeof above);
+    }
+  }
+}
+
+[[gnu::target("avx2")]] void bounds_avx2(const MovingTriangleBatch& batch, BatchBounds& out) {
+  bounds<4>(batch, out);
+}
+
+}  // namespace
+
+namespace detail {
+
+void batch_bounds_two_lanes(const MovingTriangleBatch& batch, BatchBounds& bounds) {
+  tailor::bounds<2>(batch, bounds);
+}
+
+void batch_bounds_four_lanes(const MovingTriangleBatch& batch, BatchBounds& bounds) {
+  bounds_avx2(batch, bounds);
+}
+
+}  // namespace detail
+
+void batch_bounds(const MovingTriangleBatch& batch, BatchBounds& bounds) {
+  if (lanes::has_avx2()) {
+    detail::batch_bounds_four_lanes(batch, bounds);
+  } else {
+    detail::batch_bounds_two_lanes(batch, bounds);
+  }
+}
+
+}  // namespace tailor
