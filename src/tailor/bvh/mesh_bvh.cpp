@@ -75,16 +75,23 @@ MeshBvh::MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector
   std::sort(m_top_merges.rbegin(), m_top_merges.rend());
 
   // Slots, groups, merge nodes and the corners in leaf order (= increasing id).
-  m_slot.assign(static_cast<std::size_t>(n), -1);
+  const std::size_t words = (static_cast<std::size_t>(n) + 63) / 64;
+  m_mask_bits.assign(words, 0);
+  m_masks_before_word.assign(words, 0);
   Index slots = 0;
   m_leaf_vertices.reserve(m_faces.size());
   for (Index node = 0; node < n; ++node) {
+    const std::size_t word = static_cast<std::size_t>(node) >> 6;
+    if ((node & 63) == 0) m_masks_before_word[word] = slots;
+    const bool merges = !group_root[node] && size(node) >= kGroupFaces;
+    if (group_root[node] || merges) {
+      m_mask_bits[word] |= std::uint64_t{1} << (node & 63);
+      ++slots;
+    }
     if (group_root[node]) {
-      m_slot[node] = slots++;
       m_groups.push_back(
           {node, static_cast<Index>(m_leaf_vertices.size()), static_cast<Index>(m_groups.size())});
-    } else if (size(node) >= kGroupFaces) {
-      m_slot[node] = slots++;
+    } else if (merges) {
       m_merge_nodes.push_back(node);
     }
     if (is_leaf(node)) {
@@ -154,9 +161,7 @@ void MeshBvh::refit_group(const Group& group, const Positions& x0, const Positio
     if (const Index ahead = group.first_leaf + l + kPrefetchLeaves; ahead < leaves) {
       for (const Index u : m_leaf_vertices[ahead]) {
         __builtin_prefetch(p0 + 3 * u);
-        __builtin_prefetch(p0 + 3 * u + 2);
         __builtin_prefetch(p1 + 3 * u);
-        __builtin_prefetch(p1 + 3 * u + 2);
       }
     }
     const auto& v = m_leaf_vertices[group.first_leaf + l];
@@ -179,7 +184,7 @@ void MeshBvh::refit_group(const Group& group, const Positions& x0, const Positio
   for (Index node = end - 1; node >= group.root; --node) {
     if (!is_leaf(node)) join_children(node);
   }
-  if (with_directions) m_masks[m_slot[group.root]] = tailor::direction_mask(batch);
+  if (with_directions) m_masks[mask_index(group.root)] = tailor::direction_mask(batch);
 }
 
 void MeshBvh::join_children(Index node) {
@@ -198,7 +203,7 @@ void MeshBvh::merge(Index node, bool with_directions) {
   join_children(node);
   if (with_directions) {
     const Index right_child = m_nodes[node].right_or_face;
-    m_masks[m_slot[node]] = m_masks[m_slot[node + 1]] & m_masks[m_slot[right_child]];
+    m_masks[mask_index(node)] = m_masks[mask_index(node + 1)] & m_masks[mask_index(right_child)];
   }
 }
 

@@ -4,6 +4,8 @@
 /// continuous normal bounds (direction masks), in flat arrays refitted in one pass.
 
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -55,7 +57,7 @@ class MeshBvh {
   /// Directions within 90° of every normal below the node over the step (valid after a
   /// refit with directions); 0 for the nodes inside a group, which keep no mask.
   DirectionMask direction_mask(Index node) const {
-    return m_slot[node] >= 0 ? m_masks[m_slot[node]] : 0;
+    return has_mask(node) ? m_masks[mask_index(node)] : 0;
   }
   /// An axis (not normalised) within 90° of every normal below the node over the whole
   /// step (mask_axis() of its mask), or nothing.
@@ -66,8 +68,18 @@ class MeshBvh {
   }
   /// Whether a node keeps a mask (groups and merge nodes), and its index among the
   /// num_masks() nodes that do.
-  bool has_mask(Index node) const { return m_slot[node] >= 0; }
-  Index mask_index(Index node) const { return m_slot[node]; }
+  bool has_mask(Index node) const {
+    return (m_mask_bits[static_cast<std::size_t>(node) >> 6] >> (node & 63)) & 1;
+  }
+  /// (Only for a node that has_mask().)
+  Index mask_index(Index node) const {
+    // Masks are stored in increasing node order: the index is the number of nodes with a
+    // mask before this one (a rank over the bit set, 2 bits and half a byte per face in
+    // place of a 4-byte index per node).
+    const std::size_t word = static_cast<std::size_t>(node) >> 6;
+    const std::uint64_t below = (std::uint64_t{1} << (node & 63)) - 1;
+    return m_masks_before_word[word] + std::popcount(m_mask_bits[word] & below);
+  }
   Index num_masks() const { return static_cast<Index>(m_masks.size()); }
   /// The faces the tree was built over, in the order given.
   const std::vector<Index>& faces() const { return m_faces; }
@@ -99,7 +111,8 @@ class MeshBvh {
   const TriangleMesh* m_mesh = nullptr;
   std::vector<Index> m_faces;
   std::vector<Node> m_nodes;
-  std::vector<Index> m_slot;  // node -> index into m_masks, or -1
+  std::vector<std::uint64_t> m_mask_bits;  // bit `node`: the node keeps a mask
+  std::vector<Index> m_masks_before_word;  // masks of the nodes below 64 · word
   std::vector<DirectionMask> m_masks;
   std::vector<std::array<Index, 3>> m_leaf_vertices;  // in leaf order, for a coherent refit
   std::vector<Group> m_groups;                        // increasing root id

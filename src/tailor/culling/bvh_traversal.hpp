@@ -44,9 +44,9 @@ struct StepPositions {
 };
 
 /// Collects the candidate triangle pairs (CTPs) of a step from BVH self-traversals. The pairs stay
-/// in per-thread lists of fixed-size blocks that keep their memory from step to step (no allocation
-/// once warm, no copy on growth, at most one partly filled block per thread) and are read block by
-/// block.
+/// in per-thread lists of fixed-size blocks (no copy on growth, at most one partly filled block
+/// per thread) that are read block by block, and either keep their memory for the next step
+/// (clear()) or are freed as they are consumed (consume()).
 class CandidateTraversal {
  public:
   explicit CandidateTraversal(const TriangleMesh& mesh) : m_mesh(&mesh) {}
@@ -84,6 +84,20 @@ class CandidateTraversal {
 
   /// The pairs found since clear(), as blocks (each pair `first < second`).
   std::vector<std::span<const TrianglePair>> blocks() const;
+  /// Hands each block of blocks() to `use` and then frees its memory, so that the stages
+  /// that consume the pairs can grow while the pairs shrink (a contact-heavy step has
+  /// about one collision per candidate pair: held together, the two were the step's
+  /// memory peak). No pairs are left afterwards; the next step allocates its blocks again.
+  template <class Use>
+  void consume(const Use& use) {
+    for (ThreadOutput& out : m_outputs) {
+      for (std::size_t b = 0; b < out.used; ++b) {
+        use(std::span<const TrianglePair>(out.blocks[b]));
+        std::vector<TrianglePair>().swap(out.blocks[b]);
+      }
+      out.used = 0;
+    }
+  }
   /// Number of pairs found since clear().
   std::int64_t size() const;
   /// Counts since clear().
@@ -98,7 +112,8 @@ class CandidateTraversal {
     TraversalCounts counts;
     void push(TrianglePair pair) {
       if (used == 0 || blocks[used - 1].size() == kBlockPairs) {
-        if (used == blocks.size()) blocks.emplace_back().reserve(kBlockPairs);
+        if (used == blocks.size()) blocks.emplace_back();
+        blocks[used].reserve(kBlockPairs);  // released by consume()
         ++used;
       }
       blocks[used - 1].push_back(pair);

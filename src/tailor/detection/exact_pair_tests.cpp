@@ -71,15 +71,15 @@ void ExactPairTester::test(const TriangleMesh& mesh, const Positions& x0, const 
                                                   x1.row(a), x1.row(b), x1.row(c), x1.row(d)});
           out.exact += result.path == CcdPath::exact || result.path == CcdPath::gmp;
           if (result.hit) {
-            out.edge_edge.push_back(make_edge_edge(edges, e1, e2, result.toi));
+            out.edge_edge.push_back({e1, e2, result.toi});
           }
         }
       });
 }
 
-CollisionSet ExactPairTester::take_collisions() {
+CollisionSet ExactPairTester::take_collisions(const TriangleMesh& mesh) {
   CollisionSet all;
-  auto gather = [&](auto result_member, auto thread_member) {
+  auto gather = [&](auto result_member, auto thread_member, const auto& convert) {
     auto& result = all.*result_member;
     std::size_t total = 0;
     for (const ThreadOutput& out : m_outputs) total += (out.*thread_member).size();
@@ -87,13 +87,16 @@ CollisionSet ExactPairTester::take_collisions() {
     for (ThreadOutput& out : m_outputs) {
       auto& mine = out.*thread_member;
       // Front to back, so that each block is freed once copied.
-      for (; !mine.empty(); mine.pop_front()) result.push_back(mine.front());
+      for (; !mine.empty(); mine.pop_front()) result.push_back(convert(mine.front()));
       std::remove_reference_t<decltype(mine)>().swap(mine);
     }
     sort_unique(result);
   };
-  gather(&CollisionSet::vertex_face, &ThreadOutput::vertex_face);
-  gather(&CollisionSet::edge_edge, &ThreadOutput::edge_edge);
+  gather(&CollisionSet::vertex_face, &ThreadOutput::vertex_face,
+         [](const VertexFaceCollision& c) { return c; });
+  gather(&CollisionSet::edge_edge, &ThreadOutput::edge_edge, [&](const EdgeEdgeHit& hit) {
+    return make_edge_edge(mesh.edges(), hit.e1, hit.e2, hit.toi);
+  });
   return all;
 }
 
@@ -110,7 +113,7 @@ CollisionSet test_pairs_exactly(const TriangleMesh& mesh, const Positions& x0, c
   ExactPairTester tester;
   tester.test(mesh, x0, x1, vertex_face, edge_edge);
   if (exact_fallbacks != nullptr) *exact_fallbacks = tester.exact_fallbacks();
-  return tester.take_collisions();
+  return tester.take_collisions(mesh);
 }
 
 }  // namespace tailor

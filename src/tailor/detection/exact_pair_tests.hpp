@@ -28,15 +28,22 @@ class ExactPairTester {
             std::span<const VertexFacePair> vertex_face, std::span<const EdgeEdgePair> edge_edge);
   /// Hands over the collisions since begin_step(), sorted and without duplicates, so the
   /// result does not depend on the batches, their order or the thread count. The
-  /// per-thread blocks are released as they are copied into the result.
-  CollisionSet take_collisions();
+  /// per-thread blocks are released as they are copied into the result. `mesh` is the
+  /// one the pairs were tested on.
+  CollisionSet take_collisions(const TriangleMesh& mesh);
   /// Queries since begin_step() that the exact path decided.
   std::int64_t exact_fallbacks() const;
 
  private:
+  // An edge-edge hit as found: the two edge ids (the vertex ids of EdgeEdgeCollision are
+  // looked up when the collisions are handed over), half the size of the collision.
+  struct EdgeEdgeHit {
+    Index e1, e2;
+    double toi;
+  };
   struct ThreadOutput {
     std::deque<VertexFaceCollision> vertex_face;
-    std::deque<EdgeEdgeCollision> edge_edge;
+    std::deque<EdgeEdgeHit> edge_edge;
     std::int64_t exact = 0;
   };
   tbb::enumerable_thread_specific<ThreadOutput> m_outputs;

@@ -131,7 +131,7 @@ struct SelfCollisionDetector::Impl {
     generator.add_isolated(isolated, x0, x1, options);
     stats.pair_generation_ms += elapsed_ms(start);
     test_round(x0, x1, stats);
-    for (std::span<const TrianglePair> block : traversal.blocks()) {
+    traversal.consume([&](std::span<const TrianglePair> block) {
       for (std::size_t first = 0; first < block.size(); first += kRoundTrianglePairs) {
         start = Clock::now();
         generator.clear_pairs();
@@ -141,7 +141,7 @@ struct SelfCollisionDetector::Impl {
         stats.pair_generation_ms += elapsed_ms(start);
         test_round(x0, x1, stats);
       }
-    }
+    });
     const LowLevelCounts low = generator.counts();
     stats.vf_generated = low.vf_generated;
     stats.ee_generated = low.ee_generated;
@@ -182,7 +182,7 @@ struct SelfCollisionDetector::Impl {
 
       low_level_and_ccd(x0, x1, stats);
       const auto gather = Clock::now();
-      result.collisions = tester.take_collisions();
+      result.collisions = tester.take_collisions(mesh);
       stats.ccd_ms += elapsed_ms(gather);
       stats.vf_colliding = static_cast<std::int64_t>(result.collisions.vertex_face.size());
       stats.ee_colliding = static_cast<std::int64_t>(result.collisions.edge_edge.size());

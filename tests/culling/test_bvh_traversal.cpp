@@ -1,0 +1,70 @@
+// The candidate traversal's block lists: consume() hands over exactly the pairs blocks()
+// shows, leaves none behind, and a traversal after it (its blocks freed) finds the same
+// pairs again, at one and two threads.
+
+#include <gtest/gtest.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+#include "tailor/bvh/mesh_bvh.hpp"
+#include "tailor/culling/bvh_traversal.hpp"
+#include "tailor/culling/node_contours.hpp"
+#include "tailor/mesh/procedural_steps.hpp"
+
+namespace tailor {
+namespace {
+
+using PairList = std::vector<std::pair<Index, Index>>;
+
+PairList sorted(const std::vector<TrianglePair>& pairs) {
+  PairList list;
+  for (const TrianglePair& p : pairs) list.emplace_back(p.first, p.second);
+  std::sort(list.begin(), list.end());
+  return list;
+}
+
+TEST(CandidateTraversal, ConsumeHandsOverEveryPairOnceAndFreesTheBlocks) {
+  // A folded cloth of ~100K triangles: several 256 KiB blocks of pairs per thread.
+  const ProceduralStep step = make_folded_cloth_on_sphere(100'000);
+  const TriangleMesh mesh(static_cast<Index>(step.x0.rows()), step.faces);
+  for (const int threads : {1, 2}) {
+    tbb::task_arena(threads).execute([&] {
+      const MeshBvh bvh = [&] {
+        MeshBvh tree(mesh, step.x0);
+        tree.refit(step.x0, step.x1, true);
+        return tree;
+      }();
+      const NodeContours contours(mesh, bvh);
+      CandidateTraversal traversal(mesh);
+      traversal.self(bvh, contours, {step.x0, step.x1}, {});
+      std::vector<TrianglePair> shown;
+      for (const auto block : traversal.blocks())
+        shown.insert(shown.end(), block.begin(), block.end());
+      ASSERT_GT(shown.size(), std::size_t{100'000}) << "too few pairs to fill several blocks";
+
+      std::vector<TrianglePair> consumed;
+      int blocks = 0;
+      traversal.consume([&](std::span<const TrianglePair> block) {
+        consumed.insert(consumed.end(), block.begin(), block.end());
+        ++blocks;
+      });
+      EXPECT_GT(blocks, 2);
+      EXPECT_EQ(sorted(consumed), sorted(shown)) << threads << " threads";
+      EXPECT_EQ(traversal.size(), 0);
+      EXPECT_TRUE(traversal.blocks().empty());
+
+      traversal.clear();
+      traversal.self(bvh, contours, {step.x0, step.x1}, {});
+      std::vector<TrianglePair> again;
+      for (const auto block : traversal.blocks())
+        again.insert(again.end(), block.begin(), block.end());
+      EXPECT_EQ(sorted(again), sorted(shown)) << threads << " threads";
+    });
+  }
+}
+
+}  // namespace
+}  // namespace tailor
