@@ -3,9 +3,11 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <bit>
 #include <numeric>
 
 #include "tailor/bvh/batch_bounds.hpp"
+#include "tailor/bvh/batch_gather.hpp"
 
 namespace tailor {
 namespace {
@@ -89,8 +91,12 @@ MeshBvh::MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector
       ++slots;
     }
     if (group_root[node]) {
-      m_groups.push_back(
-          {node, static_cast<Index>(m_leaf_vertices.size()), static_cast<Index>(m_groups.size())});
+      std::uint32_t leaf_bits = 0;
+      for (Index member = node; member < node + 2 * size(node) - 1; ++member) {
+        if (is_leaf(member)) leaf_bits |= std::uint32_t{1} << (member - node);
+      }
+      m_groups.push_back({node, static_cast<Index>(m_leaf_vertices.size()),
+                          static_cast<Index>(m_groups.size()), leaf_bits});
     } else if (merges) {
       m_merge_nodes.push_back(node);
     }
@@ -155,34 +161,35 @@ void MeshBvh::refit_group(const Group& group, const Positions& x0, const Positio
       __builtin_prefetch(line, 1);
     }
   }
-  for (Index l = 0; l < count; ++l) {
-    // The corners are gathered in leaf order, which the hardware prefetcher cannot follow:
-    // without this the refit waits on memory (1M-face cloth: 42 ms against 33 ms).
-    if (const Index ahead = group.first_leaf + l + kPrefetchLeaves; ahead < leaves) {
-      for (const Index u : m_leaf_vertices[ahead]) {
-        __builtin_prefetch(p0 + 3 * u);
-        __builtin_prefetch(p1 + 3 * u);
-      }
+  // The corners are gathered in leaf order, which the hardware prefetcher cannot follow:
+  // without this the refit waits on memory (1M-face cloth: 42 ms against 33 ms).
+  const Index prefetch_end = std::min(leaves, group.first_leaf + count + kPrefetchLeaves);
+  for (Index ahead = group.first_leaf + kPrefetchLeaves; ahead < prefetch_end; ++ahead) {
+    for (const Index u : m_leaf_vertices[ahead]) {
+      __builtin_prefetch(p0 + 3 * u);
+      __builtin_prefetch(p1 + 3 * u);
     }
-    const auto& v = m_leaf_vertices[group.first_leaf + l];
-    batch.add(p0 + 3 * v[0], p0 + 3 * v[1], p0 + 3 * v[2], p1 + 3 * v[0], p1 + 3 * v[1],
-              p1 + 3 * v[2]);
   }
-  batch.pad();
+  gather_batch(
+      p0, p1,
+      std::span(m_leaf_vertices)
+          .subspan(static_cast<std::size_t>(group.first_leaf), static_cast<std::size_t>(count)),
+      batch);
   // Leaf boxes: per coordinate and lane, the six corners' extremes, rounded outward.
   BatchBounds bounds;
   batch_bounds(batch, bounds);
-  // The group's nodes are the id range [root, end) (pre-order): its leaves in increasing
-  // id order are the batch's lanes; its inner nodes are joined children first.
-  const Index end = group.root + 2 * count - 1;
-  for (Index node = group.root, lane = 0; node < end; ++node) {
-    if (!is_leaf(node)) continue;
-    FloatBox& box = m_nodes[node].box;
+  // The group's nodes are the id range [root, root + 2·count - 1) (pre-order): its leaves
+  // in increasing id order are the batch's lanes; its inner nodes are joined children
+  // first (decreasing id).
+  int lane = 0;
+  for (std::uint32_t bits = group.leaf_bits; bits != 0; bits &= bits - 1, ++lane) {
+    FloatBox& box = m_nodes[group.root + std::countr_zero(bits)].box;
     for (int k = 0; k < 3; ++k) box.min[k] = bounds.low[k][lane], box.max[k] = bounds.high[k][lane];
-    ++lane;
   }
-  for (Index node = end - 1; node >= group.root; --node) {
-    if (!is_leaf(node)) join_children(node);
+  const std::uint32_t inner = ~group.leaf_bits & ((std::uint32_t{1} << (2 * count - 1)) - 1);
+  for (std::uint32_t bits = inner; bits != 0;
+       bits &= ~(std::uint32_t{1} << (31 - std::countl_zero(bits)))) {
+    join_children(group.root + 31 - std::countl_zero(bits));
   }
   if (with_directions) m_masks[mask_index(group.root)] = tailor::direction_mask(batch);
 }

@@ -87,6 +87,7 @@ class MeshBvh {
  private:
   static constexpr Index kGroupFaces = 16;
   static_assert(kGroupFaces <= MovingTriangleBatch::kCapacity + 1);
+  static_assert(2 * kGroupFaces - 3 <= 32);
 
   struct Node {
     FloatBox box;
@@ -96,6 +97,9 @@ class MeshBvh {
   struct Group {
     Index root, first_leaf;  // its leaves are first_leaf, first_leaf + 1, ... (leaf order)
     Index index;             // its position in m_groups
+    // Bit i: node root + i is a leaf (a group has at most 2·kGroupFaces - 3 nodes), so
+    // that the refit visits leaves and inner nodes without a branch per node.
+    std::uint32_t leaf_bits;
   };
   // The work of one parallel task: a range of groups, then a range of merge nodes
   // (visited in decreasing id order, children first).
