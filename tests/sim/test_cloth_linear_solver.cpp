@@ -1,6 +1,7 @@
 /// @file
 /// The implicit step's linear solver: every method solves the same SPD systems, the
-/// factorisations refuse matrices that are not positive definite.
+/// factorisations refuse matrices that are not positive definite, `automatic` reuses a
+/// large factorisation only while CG with it converges.
 
 #include <gtest/gtest.h>
 
@@ -107,6 +108,58 @@ TEST(ClothLinearSolver, AutomaticPicksByTheNumberOfUnknowns) {
   info = large_solver.solve(large, b, x);
   EXPECT_TRUE(info.ok && info.factorized && info.supernodal);
   EXPECT_LT(relative_residual(large, x, b), 1e-12);
+}
+
+TEST(ClothLinearSolver, AutomaticReusesALargeFactorisationWhileItPreconditionsWell) {
+  std::mt19937 rng(5);
+  const SparseMatrix base = grid_system(52, rng, 1.0);  // 8,112 unknowns: supernodal
+  ASSERT_GE(base.rows(), ClothLinearSolver::kSupernodalFrom);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(base.rows(), -1, 2);
+  ClothLinearSolver solver, exact;  // automatic, and a fresh factorisation every time
+  exact.set_method(ClothSolver::supernodal, 0);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(base.rows()), reference = x;
+  SparseMatrix identity(base.rows(), base.rows());
+  identity.setIdentity();
+  const auto solve = [&](const SparseMatrix& A) {
+    const LinearSolveInfo info = solver.solve(A, b, x);
+    EXPECT_TRUE(exact.solve(A, b, reference).ok);
+    EXPECT_TRUE(info.ok);
+    return info;
+  };
+
+  // Systems that drift slowly (as successive substeps do): the first is factorised, the
+  // next kMaxReuses reuse it to kReuseTolerance within kReuseIterations, then it is renewed.
+  LinearSolveInfo info = solve(base);
+  EXPECT_TRUE(info.factorized && info.supernodal && !info.reused);
+  for (int k = 1; k <= ClothLinearSolver::kMaxReuses + 1; ++k) {
+    const SparseMatrix A = base + (0.02 * k) * identity;
+    info = solve(A);
+    if (k <= ClothLinearSolver::kMaxReuses) {
+      EXPECT_TRUE(info.reused && !info.factorized && info.supernodal) << "system " << k;
+      EXPECT_LE(info.iterations, ClothLinearSolver::kReuseIterations);
+      EXPECT_LE(relative_residual(A, x, b), ClothLinearSolver::kReuseTolerance);
+      EXPECT_LT((x - reference).norm(), 1e-4 * reference.norm());
+    } else {
+      EXPECT_TRUE(info.factorized && !info.reused) << "renewed after kMaxReuses";
+      EXPECT_LT(relative_residual(A, x, b), 1e-12);
+    }
+  }
+
+  // A system far from the kept one (another stiffness): CG misses, so it is factorised,
+  // and so are the next two (back-off) although they are close to it.
+  std::mt19937 other(99);
+  const SparseMatrix far = grid_system(52, other, 0.01);
+  info = solve(far);
+  EXPECT_TRUE(info.factorized && !info.reused);
+  EXPECT_LT(relative_residual(far, x, b), 1e-10);  // a hundred times worse conditioned
+  for (int k = 1; k <= 3; ++k) {
+    info = solve(far + (0.001 * k) * identity);
+    if (k <= 2) {
+      EXPECT_TRUE(info.factorized) << "back-off system " << k;
+    } else {
+      EXPECT_TRUE(info.reused) << "reused again after the back-off";
+    }
+  }
 }
 
 }  // namespace

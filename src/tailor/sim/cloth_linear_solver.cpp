@@ -1,11 +1,12 @@
 #include "tailor/sim/cloth_linear_solver.hpp"
 
 #include <Eigen/CholmodSupport>
+#include <algorithm>
 
 namespace tailor {
 
 struct ClothLinearSolver::Supernodal {
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky;
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Upper> cholesky;
 
   // Analyses the pattern of `A`, the pattern of every later system.
   explicit Supernodal(const SparseMatrix& A) {
@@ -55,6 +56,35 @@ bool ClothLinearSolver::supernodal_solve(const SparseMatrix& A, const Eigen::Vec
   return spd;
 }
 
+bool ClothLinearSolver::reuse_solve(const SparseMatrix& A, const Eigen::VectorXd& b,
+                                    Eigen::VectorXd& x, int& iterations) {
+  const auto precondition = [&](const Eigen::VectorXd& r) -> Eigen::VectorXd {
+    return m_supernodal->cholesky.solve(r);
+  };
+  iterations = 0;
+  const double target = kReuseTolerance * b.norm();
+  Eigen::VectorXd r = b - A * x;
+  if (r.norm() <= target) return true;
+  Eigen::VectorXd z = precondition(r);
+  Eigen::VectorXd p = z;
+  double rz = r.dot(z);
+  while (iterations < kReuseIterations) {
+    const Eigen::VectorXd Ap = A * p;
+    const double pAp = p.dot(Ap);
+    if (!(pAp > 0)) return false;  // not positive definite along p (or not finite)
+    const double alpha = rz / pAp;
+    x += alpha * p;
+    r -= alpha * Ap;
+    ++iterations;
+    if (r.norm() <= target) return x.allFinite();
+    z = precondition(r);
+    const double rz_next = r.dot(z);
+    p = z + (rz_next / rz) * p;
+    rz = rz_next;
+  }
+  return false;
+}
+
 LinearSolveInfo ClothLinearSolver::solve(const SparseMatrix& A, const Eigen::VectorXd& b,
                                          Eigen::VectorXd& x) {
   LinearSolveInfo info;
@@ -63,6 +93,26 @@ LinearSolveInfo ClothLinearSolver::solve(const SparseMatrix& A, const Eigen::Vec
     method = A.rows() > kDirectSolveLimit  ? ClothSolver::iterative
              : A.rows() >= kSupernodalFrom ? ClothSolver::supernodal
                                            : ClothSolver::direct;
+  }
+  const bool reuse = m_method == ClothSolver::automatic && method == ClothSolver::supernodal;
+  if (reuse && m_skip_reuse > 0) {
+    --m_skip_reuse;
+  } else if (reuse && m_kept && m_reuses < kMaxReuses &&
+             2 * m_last_iterations <= kReuseIterations) {
+    const Eigen::VectorXd start = x;
+    if (reuse_solve(A, b, x, info.iterations)) {
+      ++m_reuses;
+      m_last_iterations = info.iterations;
+      m_misses = 0;
+      info.reused = true;
+      info.supernodal = true;
+      info.ok = true;
+      return info;
+    }
+    ++m_misses;
+    m_skip_reuse = 1 << std::min(m_misses, 4);
+    x = start;  // factorise below
+    info.iterations = 0;
   }
   switch (method) {
     case ClothSolver::iterative:
@@ -85,6 +135,9 @@ LinearSolveInfo ClothLinearSolver::solve(const SparseMatrix& A, const Eigen::Vec
       break;
   }
   if (info.ok) info.ok = x.allFinite();
+  m_kept = reuse && info.ok && info.factorized;
+  m_reuses = 0;
+  m_last_iterations = 0;
   return info;
 }
 

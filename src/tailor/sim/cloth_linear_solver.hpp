@@ -16,7 +16,9 @@ namespace tailor {
 /// Linear solver of the implicit step.
 enum class ClothSolver {
   automatic,   ///< direct below ClothLinearSolver::kSupernodalFrom unknowns, supernodal up
-               ///< to ClothLinearSolver::kDirectSolveLimit, else iterative
+               ///< to ClothLinearSolver::kDirectSolveLimit, else iterative; a
+               ///< supernodal factorisation is reused for later systems while it
+               ///< preconditions conjugate gradient well (ClothLinearSolver)
   direct,      ///< sparse simplicial LDLᵀ Cholesky, Eigen, factorised every step (exact)
   supernodal,  ///< supernodal LLᵀ Cholesky, CHOLMOD, factorised every step (exact)
   iterative,   ///< conjugate gradient, block-Jacobi preconditioner, warm-started
@@ -25,7 +27,8 @@ enum class ClothSolver {
 /// What one solve did.
 struct LinearSolveInfo {
   bool factorized = false;  ///< solved by Cholesky factorisation (false: CG)
-  bool supernodal = false;  ///< the factorisation was CHOLMOD's supernodal one
+  bool supernodal = false;  ///< the factorisation (made or reused) was CHOLMOD's supernodal one
+  bool reused = false;      ///< CG preconditioned by an earlier system's factorisation
   int iterations = 0;       ///< CG iterations (0 for the factorisation)
   bool ok = false;          ///< false if the solve failed (not SPD, not finite)
 };
@@ -33,11 +36,18 @@ struct LinearSolveInfo {
 /// Solves A x = b for the successive systems of a cloth model (same pattern every time):
 /// the symbolic analysis of the factorisation is done once.
 ///
-/// Tried and rejected (2026-11-24): CG preconditioned by the factorisation of an earlier
-/// substep's matrix. On the sleeve the arm's contact and friction blocks change too much
-/// from one substep to the next: 198 of 240 solves of the elbow gesture needed more than
-/// 25 iterations to reach a relative residual of 1e-10 and fell back to factorising, so
-/// the solve took 5.3 ms per substep instead of 2.3.
+/// `automatic` reuses a supernodal factorisation (large systems): the next systems are
+/// solved by conjugate gradient preconditioned with it, to a relative residual of
+/// kReuseTolerance, until CG needs more than kReuseIterations or kMaxReuses systems used
+/// it; then it factorises again. The successive systems of a cloth differ by the
+/// stiffness at new positions and by the arm's contact and friction blocks; on the 10×
+/// sleeve (20,592 unknowns) a factorisation costs as much as ~20 iterations and stays a
+/// good preconditioner for a few substeps (3-4 iterations) except where contacts with
+/// the arm change (docs/simulation.md). Small systems are factorised every time: on the
+/// default sleeve (2,079 unknowns) a factorisation costs about 9 iterations, and there the
+/// arm's contacts change enough between substeps that 203 of 240 reuses in the elbow
+/// gesture missed 10 iterations at any tolerance from 1e-5 to 1e-8 (an earlier attempt,
+/// 2026-11-24, asked for 1e-10 within 25 iterations and missed in 198 of 240).
 class ClothLinearSolver {
  public:
   using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
@@ -50,6 +60,15 @@ class ClothLinearSolver {
   /// with one or two threads, factorisation + solve, best of 5-50): 2,079 unknowns (default sleeve)
   /// Eigen 1.9 ms, CHOLMOD 4.3-5.4; 20,592 (10× sleeve) Eigen 121 ms, CHOLMOD 57-82.
   static constexpr Eigen::Index kSupernodalFrom = 8000;
+  /// Relative residual at which CG with a reused factorisation stops.
+  static constexpr double kReuseTolerance = 1e-6;
+  /// CG iterations allowed with a reused factorisation; a system that needs more is
+  /// factorised, and the next 2, 4, 8 or 16 systems (after 1, 2, 3 or more such misses in
+  /// a row) are factorised without trying; one that needed more than half of them has the
+  /// next one factorised.
+  static constexpr int kReuseIterations = 10;
+  /// Systems solved with one factorisation before it is renewed in any case.
+  static constexpr int kMaxReuses = 8;
 
   ClothLinearSolver();
   ~ClothLinearSolver();
@@ -66,6 +85,10 @@ class ClothLinearSolver {
   bool factorize_and_solve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x);
   // The same with CHOLMOD's supernodal LLᵀ.
   bool supernodal_solve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x);
+  // CG preconditioned by the kept factorisation (warm start x); false when it does not
+  // reach kReuseTolerance within kReuseIterations.
+  bool reuse_solve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                   int& iterations);
 
   ClothSolver m_method = ClothSolver::automatic;
   double m_cg_tolerance = 1e-6;
@@ -78,6 +101,13 @@ class ClothLinearSolver {
   // CHOLMOD's state behind a pointer: cholmod.h stays out of the public headers.
   struct Supernodal;
   std::unique_ptr<Supernodal> m_supernodal;
+  // The reusable supernodal factorisation of `automatic`: valid, how many systems it
+  // solved since, and the CG iterations of the last of them.
+  bool m_kept = false;
+  int m_reuses = 0;
+  int m_last_iterations = 0;
+  int m_misses = 0;      // reuses in a row that did not converge
+  int m_skip_reuse = 0;  // systems to factorise before trying a reuse again
 };
 
 }  // namespace tailor
