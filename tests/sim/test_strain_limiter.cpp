@@ -67,6 +67,69 @@ TEST(StrainLimiter, PulledStripEndsWithinTheLimitAndPinsStay) {
   EXPECT_EQ(x.row(n), pinned_before.row(n));
 }
 
+TEST(StrainLimiter, AcceleratesOnlyMeshesManyEdgesDeep) {
+  const Strip shallow = make_strip(20, 0.01), deep = make_strip(60, 0.01);
+  const StrainLimiter a(*shallow.mesh, shallow.rest, masses_with_pins(40, {0, 20}), 0.03);
+  const StrainLimiter b(*deep.mesh, deep.rest, masses_with_pins(120, {0, 60}), 0.03);
+  EXPECT_EQ(a.depth(), 19);
+  EXPECT_EQ(b.depth(), 59);
+  EXPECT_FALSE(a.accelerated());
+  EXPECT_TRUE(b.accelerated());
+  const StrainLimiter forced(*shallow.mesh, shallow.rest, masses_with_pins(40, {0, 20}), 0.03,
+                             StrainAcceleration::chebyshev);
+  const StrainLimiter plain(*deep.mesh, deep.rest, masses_with_pins(120, {0, 60}), 0.03,
+                            StrainAcceleration::off);
+  EXPECT_TRUE(forced.accelerated());
+  EXPECT_FALSE(plain.accelerated());
+}
+
+TEST(StrainLimiter, ChebyshevBringsADeepStripCloserToTheLimit) {
+  // A strip 120 edges long lying over a cylinder across it, pinned at one end and
+  // stretched 30 % with the cylinder holding it up (the constraint after every sweep
+  // keeps it outside): the sleeve on the arm in small.
+  const int n = 121;
+  const Strip s = make_strip(n, 0.01);
+  const Eigen::VectorXd m = masses_with_pins(2 * n, {0, n});
+  const Vec3 centre(0.6, -0.25, 0);
+  const double radius = 0.3;
+  const auto outside = [&](Positions& y) {
+    std::int64_t moved = 0;
+    for (Eigen::Index i = 0; i < y.rows(); ++i) {
+      if (i == 0 || i == n) continue;
+      Eigen::Vector2d d(y(i, 0) - centre[0], y(i, 1) - centre[1]);
+      if (d.norm() < radius) {
+        d *= radius * (1 + 1e-12) / d.norm();  // a little out, so that it holds after rounding
+        y(i, 0) = centre[0] + d[0], y(i, 1) = centre[1] + d[1];
+        ++moved;
+      }
+    }
+    return moved;
+  };
+  Positions start = s.rest;
+  start.col(0) *= 1.3;
+  outside(start);
+  double worst[2];
+  int sweeps[2];
+  for (const StrainAcceleration acceleration :
+       {StrainAcceleration::off, StrainAcceleration::chebyshev}) {
+    const StrainLimiter limiter(*s.mesh, s.rest, m, 0.03, acceleration);
+    Positions x = start;
+    const StrainLimitStats stats = limiter.apply(x, 1000, outside);
+    const int k = acceleration == StrainAcceleration::chebyshev;
+    worst[k] = stats.max_strain_after;
+    sweeps[k] = stats.sweeps;
+    EXPECT_EQ(outside(x), 0) << "the constraint runs last";
+    EXPECT_EQ(x.row(0), start.row(0));
+  }
+  // Neither reaches the limit in 1,000 sweeps from this far (all the excess has to slide
+  // over the cylinder to the free end), but the accelerated sweeps get much closer
+  // (measured: 0.604 plain, 0.140 accelerated; 0.140 plain and 0.030 accelerated after
+  // 10,000).
+  EXPECT_EQ(sweeps[0], 1000);
+  EXPECT_GT(worst[0], 0.5);
+  EXPECT_LT(worst[1], 0.2);
+}
+
 TEST(StrainLimiter, OverRelaxedCorrectionsNeverShortenAnEdgeBelowItsRestLength) {
   // A straight chain pulled to twice its length from a pinned end: the first sweeps are
   // over-relaxed (strain far above the limit); no edge along the chain may end up

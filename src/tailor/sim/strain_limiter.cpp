@@ -42,7 +42,8 @@ StrainSummary strain_summary(const TriangleMesh& mesh, const Positions& rest, co
 }
 
 StrainLimiter::StrainLimiter(const TriangleMesh& mesh, const Positions& rest,
-                             const Eigen::VectorXd& masses, double max_strain)
+                             const Eigen::VectorXd& masses, double max_strain,
+                             StrainAcceleration acceleration)
     : m_max_strain(max_strain) {
   const Index nv = mesh.num_vertices();
   if (rest.rows() != nv || masses.size() != nv) {
@@ -84,6 +85,9 @@ StrainLimiter::StrainLimiter(const TriangleMesh& mesh, const Positions& rest,
       }
     }
   }
+  m_depth = level.empty() ? 0 : *std::max_element(level.begin(), level.end());
+  m_accelerated = acceleration == StrainAcceleration::chebyshev ||
+                  (acceleration == StrainAcceleration::automatic && m_depth > kChebyshevDepth);
   const Index ne = mesh.num_edges();
   std::vector<Index> order(static_cast<std::size_t>(ne));
   std::iota(order.begin(), order.end(), 0);
@@ -152,10 +156,25 @@ StrainLimitStats StrainLimiter::apply(Positions& x, int max_sweeps,
   // the arm). Near the limit, plain projections, which reach a state that neither the
   // limiter nor the constraint changes.
   double last_worst = std::numeric_limits<double>::infinity();
+  // Chebyshev acceleration (see accelerated()): x_{k+1} = ω_{k+1} (x̂_{k+1} - x_{k-1})
+  // + x_{k-1}, x̂_{k+1} the sweep of x_k, with ω_{k+1} = 4 / (4 - ρ² ω_k) from
+  // ω = 2 / (2 - ρ²) at sweep kChebyshevFrom (Wang 2015).
+  Positions previous, current;
+  double omega = 1;
   for (int s = 0; s < max_sweeps; ++s) {
     const std::int64_t before = stats.corrections;
     const double relaxation = last_worst > kOverRelaxedAbove * m_max_strain ? kOverRelaxation : 1.0;
+    if (m_accelerated) current = x;
     const double worst = sweep(x, s % 2 == 0, relaxation, stats.corrections);
+    if (m_accelerated) {
+      constexpr double rho2 = kChebyshevRadius * kChebyshevRadius;
+      if (s == kChebyshevFrom) omega = 2 / (2 - rho2);
+      if (s > kChebyshevFrom) {
+        omega = 4 / (4 - rho2 * omega);
+        x = omega * (x - previous) + previous;
+      }
+      previous = std::move(current);
+    }
     last_worst = worst;
     if (s == 0) stats.max_strain_before = worst;
     ++stats.sweeps;
