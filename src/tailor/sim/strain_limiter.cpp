@@ -168,9 +168,8 @@ StrainLimitStats StrainLimiter::apply(Positions& x, int max_sweeps,
     const double worst = sweep(x, s % 2 == 0, relaxation, stats.corrections);
     if (m_accelerated) {
       constexpr double rho2 = kChebyshevRadius * kChebyshevRadius;
-      if (s == kChebyshevFrom) omega = 2 / (2 - rho2);
-      if (s > kChebyshevFrom) {
-        omega = 4 / (4 - rho2 * omega);
+      if (s >= kChebyshevFrom) {
+        omega = s == kChebyshevFrom ? 2 / (2 - rho2) : 4 / (4 - rho2 * omega);
         x = omega * (x - previous) + previous;
       }
       previous = std::move(current);

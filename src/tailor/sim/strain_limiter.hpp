@@ -64,7 +64,7 @@ class StrainLimiter {
   /// radius. Gauss-Seidel moves a correction by about one edge per sweep where the arm
   /// pushes back, so a mesh that is many edges deep needs more sweeps than the cap allows:
   /// the 10× sleeve (66 rings) ended the elbow, raise and twist gestures
-  /// with 19.2 / 16.5 / 27.7 % largest strain after plain sweeps and 5.0 / 6.1 / 6.3 %
+  /// with 19.2 / 16.5 / 27.7 % largest strain after plain sweeps and 5.0 / 5.9 / 6.3 %
   /// accelerated (docs/simulation.md). On the default sleeve (21 rings) plain sweeps stay
   /// within 3 % and keep the sleeve's end extent at 98-99.5 %, while accelerated ones
   /// reached the limit exactly but let the twist's extent fall to 94-95 %: so
