@@ -7,8 +7,6 @@
 namespace tailor {
 namespace {
 
-constexpr int kLanes = MovingTriangleBatch::kCapacity;
-
 // The 13 directions c_j (first nonzero component +1), in bit order.
 constexpr int kDirections[13][3] = {{1, 0, 0},  {0, 1, 0},  {0, 0, 1},  {1, 1, 0},  {1, -1, 0},
                                     {1, 0, 1},  {1, 0, -1}, {0, 1, 1},  {0, 1, -1}, {1, 1, 1},
