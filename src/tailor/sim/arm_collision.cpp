@@ -9,6 +9,11 @@
 namespace tailor {
 namespace {
 
+/// A vertex this close to the margin (relative) counts as outside: a vertex just
+/// projected lands on the margin only up to rounding, and projecting it again every time
+/// would keep the strain limiter's alternating projections from ever finishing.
+constexpr double kMarginRounding = 1e-9;
+
 std::array<Eigen::Isometry3d, 2> bone_motion(const ArmSkeleton& s0, const ArmSkeleton& s1) {
   return {s1.upper_arm * s0.upper_arm.inverse(), s1.forearm * s0.forearm.inverse()};
 }
@@ -103,7 +108,7 @@ ArmCollisionStats project_out_of_arm(const Arm& arm, const ArmSkeleton& skeleton
     // A few passes: in the elbow crease, leaving one cone can enter the other.
     for (int pass = 0; pass < 4; ++pass) {
       const ArmDistance d = arm.distance(skeleton1, p);
-      if (d.distance >= margin) break;
+      if (d.distance >= margin * (1 - kMarginRounding)) break;
       const double depth = margin - d.distance;
       stats.max_depth = std::max(stats.max_depth, depth);
       p += depth * d.normal;

@@ -85,9 +85,7 @@ StrainLimiter::StrainLimiter(const TriangleMesh& mesh, const Positions& rest,
       }
     }
   }
-  m_depth = level.empty() ? 0 : *std::max_element(level.begin(), level.end());
-  m_accelerated = acceleration == StrainAcceleration::chebyshev ||
-                  (acceleration == StrainAcceleration::automatic && m_depth > kChebyshevDepth);
+  m_accelerated = acceleration == StrainAcceleration::chebyshev;
   const Index ne = mesh.num_edges();
   std::vector<Index> order(static_cast<std::size_t>(ne));
   std::iota(order.begin(), order.end(), 0);
@@ -158,7 +156,7 @@ StrainLimitStats StrainLimiter::apply(Positions& x, int max_sweeps,
   double last_worst = std::numeric_limits<double>::infinity();
   // Chebyshev acceleration (see accelerated()): x_{k+1} = ω_{k+1} (x̂_{k+1} - x_{k-1})
   // + x_{k-1}, x̂_{k+1} the sweep of x_k, with ω_{k+1} = 4 / (4 - ρ² ω_k) from
-  // ω = 2 / (2 - ρ²) at sweep kChebyshevFrom (Wang 2015).
+  // ω = 2 / (2 - ρ²) at the first extrapolation (Wang 2015).
   Positions previous, current;
   double omega = 1;
   for (int s = 0; s < max_sweeps; ++s) {
@@ -168,8 +166,10 @@ StrainLimitStats StrainLimiter::apply(Positions& x, int max_sweeps,
     const double worst = sweep(x, s % 2 == 0, relaxation, stats.corrections);
     if (m_accelerated) {
       constexpr double rho2 = kChebyshevRadius * kChebyshevRadius;
-      if (s >= kChebyshevFrom) {
-        omega = s == kChebyshevFrom ? 2 / (2 - rho2) : 4 / (4 - rho2 * omega);
+      // Only after a sweep that corrected something: a state within the limit has
+      // nothing to accelerate, and extrapolating would replay the constraint's last move.
+      if (s >= kChebyshevFrom && stats.corrections != before) {
+        omega = omega == 1 ? 2 / (2 - rho2) : 4 / (4 - rho2 * omega);
         x = omega * (x - previous) + previous;
       }
       previous = std::move(current);

@@ -44,9 +44,8 @@ StrainSummary strain_summary(const TriangleMesh& mesh, const Positions& rest, co
 
 /// Whether StrainLimiter accelerates its sweeps (StrainLimiter::accelerated()).
 enum class StrainAcceleration {
-  automatic,  ///< when the mesh reaches more than kChebyshevDepth edges from its pins
+  chebyshev,  ///< Chebyshev semi-iterative weights from sweep kChebyshevFrom on
   off,        ///< plain (over-relaxed) Gauss-Seidel
-  chebyshev,  ///< always
 };
 
 /// Edge strain limiter of one mesh (built once per topology).
@@ -55,26 +54,20 @@ class StrainLimiter {
   /// `masses` per vertex (kg; infinite for pinned vertices). Throws InputError on a
   /// size mismatch, a non-positive mass, a zero-length rest edge or a negative limit.
   StrainLimiter(const TriangleMesh& mesh, const Positions& rest, const Eigen::VectorXd& masses,
-                double max_strain, StrainAcceleration acceleration = StrainAcceleration::automatic);
+                double max_strain, StrainAcceleration acceleration = StrainAcceleration::chebyshev);
 
   /// Chebyshev semi-iterative acceleration of the sweeps (Wang 2015, "A Chebyshev
   /// semi-iterative approach for accelerating projective and position-based dynamics"):
   /// from sweep kChebyshevFrom on, each sweep's result is extrapolated from the state two
   /// sweeps back, with weights set by an estimate kChebyshevRadius of the sweeps' spectral
   /// radius. Gauss-Seidel moves a correction by about one edge per sweep where the arm
-  /// pushes back, so a mesh that is many edges deep needs more sweeps than the cap allows:
-  /// the 10× sleeve (66 rings) ended the elbow, raise and twist gestures
-  /// with 19.2 / 16.5 / 27.7 % largest strain after plain sweeps and 5.0 / 5.9 / 6.3 %
-  /// accelerated (docs/simulation.md). On the default sleeve (21 rings) plain sweeps stay
-  /// within 3 % and keep the sleeve's end extent at 98-99.5 %, while accelerated ones
-  /// reached the limit exactly but let the twist's extent fall to 94-95 %: so
-  /// `automatic` accelerates only meshes more than kChebyshevDepth edges deep.
+  /// pushes back, so plain sweeps leave a long chain over the limit. Largest strain over
+  /// the elbow, raise and twist gestures with one implicit step per frame: the default
+  /// sleeve 11-14 % plain, exactly the 2.5 % limit accelerated; the 10× sleeve (66 rings)
+  /// 3.3-7.3 % accelerated within 400 sweeps (docs/simulation.md). Off only on request.
   bool accelerated() const { return m_accelerated; }
-  /// The largest number of edges between a vertex and the nearest pinned vertex.
-  Index depth() const { return m_depth; }
   static constexpr double kChebyshevRadius = 0.995;
   static constexpr int kChebyshevFrom = 10;
-  static constexpr Index kChebyshevDepth = 40;
 
   /// While the worst strain exceeds kOverRelaxedAbove times the limit, corrections remove
   /// kOverRelaxation times an edge's excess (successive over-relaxation; never shorter
@@ -107,7 +100,6 @@ class StrainLimiter {
   std::vector<double> m_inverse_rest_squared;  // 1 / rest length², per entry
   std::vector<double> m_weight0;               // share of the correction on vertex 0
   double m_max_strain = 0;
-  Index m_depth = 0;
   bool m_accelerated = false;
 };
 
