@@ -27,6 +27,7 @@ struct BenchArgs {
   Index min_triangles = 10'000;
   Index max_triangles = 1'000'000;
   int repetitions = 3;
+  double min_seconds = 0.5;
   std::vector<std::string> scenes = scale_scene_names();
   std::vector<int> threads = {1, 2};
 };
@@ -73,6 +74,7 @@ int run_scale(const BenchArgs& args) {
   options.max_triangles = args.max_triangles;
   options.threads = args.threads;
   options.repetitions = args.repetitions;
+  options.min_seconds = args.min_seconds;
   const bool terminal = on_terminal();
   options.progress = [&](const std::string& what) {
     if (terminal) fmt::print(stderr, "\r{:<60}", what);
@@ -85,9 +87,10 @@ int run_scale(const BenchArgs& args) {
   scale_plot(rows).write(std::filesystem::path(args.out) / "scale.svg");
   fmt::print("{}", scale_markdown(rows));
   fmt::print(
-      "Milliseconds per step (median of {}), preset paper; floor = every face's swept box from "
-      "x0 and x1; B/triangle = peak memory of topology + detector + step buffers.\n",
-      args.repetitions);
+      "Milliseconds per step (median of at least {} steps and {} s per row), preset paper; floor "
+      "= every face's swept box from x0 and x1; B/triangle = peak memory of topology + detector "
+      "+ step buffers.\n",
+      args.repetitions, args.min_seconds);
   fmt::print("written to {}/\n", args.out);
   return kSuccess;
 }
@@ -124,8 +127,15 @@ const CommandRegistration registration{
       scale->add_option("--threads", args->threads, "Thread counts to run")
           ->check(CLI::Range(1, 256))
           ->capture_default_str();
-      scale->add_option("--repetitions", args->repetitions, "Timed steps per configuration")
+      scale
+          ->add_option("--repetitions", args->repetitions,
+                       "Timed steps per configuration, at least")
           ->check(CLI::Range(1, 100))
+          ->capture_default_str();
+      scale
+          ->add_option("--min-seconds", args->min_seconds,
+                       "More timed steps while a configuration's took less than this")
+          ->check(CLI::Range(0.0, 600.0))
           ->capture_default_str();
       return [args, paper] { return paper->parsed() ? run_paper(*args) : run_scale(*args); };
     }};

@@ -9,7 +9,7 @@ namespace {
 TEST(CliBench, Help) {
   expect_help("bench", {"paper", "scale"});
   expect_help("bench paper", {"--scene", "--frames", "--out"});
-  expect_help("bench scale", {"--max-triangles", "--repetitions"});
+  expect_help("bench scale", {"--max-triangles", "--repetitions", "--min-seconds"});
 }
 
 TEST(CliBench, UnknownOptionAndBadValues) {
@@ -17,6 +17,7 @@ TEST(CliBench, UnknownOptionAndBadValues) {
   expect_usage_error("bench paper --frames 0", {"--frames"});
   expect_usage_error("bench scale --max-triangles 5", {"--max-triangles"});
   expect_usage_error("bench scale --repetitions 1000", {"--repetitions"});
+  expect_usage_error("bench scale --min-seconds -1", {"--min-seconds"});
 }
 
 TEST(CliBench, MissingSceneFileIsNamed) {

@@ -1,11 +1,13 @@
 // The candidate traversal's block lists: consume() hands over exactly the pairs blocks()
 // shows, leaves none behind, and a traversal after it (its blocks freed) finds the same
-// pairs again, at one and two threads.
+// pairs again; remove_if() removes exactly the pairs its test culls; at one and two
+// threads.
 
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <iterator>
 #include <utility>
 #include <vector>
 
@@ -62,6 +64,38 @@ TEST(CandidateTraversal, ConsumeHandsOverEveryPairOnceAndFreesTheBlocks) {
       for (const auto block : traversal.blocks())
         again.insert(again.end(), block.begin(), block.end());
       EXPECT_EQ(sorted(again), sorted(shown)) << threads << " threads";
+    });
+  }
+}
+
+TEST(CandidateTraversal, RemoveIfRemovesExactlyThePairsItsTestCulls) {
+  // Several blocks per thread, each cut into many chunks; the test culls two pairs in three.
+  const ProceduralStep step = make_folded_cloth_on_sphere(100'000);
+  const TriangleMesh mesh(static_cast<Index>(step.x0.rows()), step.faces);
+  const auto culled = [](const TrianglePair& p) { return (p.first + 7 * p.second) % 3 != 0; };
+  for (const int threads : {1, 2}) {
+    tbb::task_arena(threads).execute([&] {
+      MeshBvh bvh(mesh, step.x0);
+      bvh.refit(step.x0, step.x1, true);
+      const NodeContours contours(mesh, bvh);
+      CandidateTraversal traversal(mesh);
+      traversal.self(bvh, contours, {step.x0, step.x1}, {});
+      std::vector<TrianglePair> before, expected;
+      for (const auto block : traversal.blocks())
+        before.insert(before.end(), block.begin(), block.end());
+      std::copy_if(before.begin(), before.end(), std::back_inserter(expected),
+                   [&](const TrianglePair& p) { return !culled(p); });
+      ASSERT_GT(before.size(), std::size_t{100'000});
+
+      const std::int64_t removed = traversal.remove_if(culled);
+      EXPECT_EQ(removed, static_cast<std::int64_t>(before.size() - expected.size()));
+      std::vector<TrianglePair> after;
+      for (const auto block : traversal.blocks())
+        after.insert(after.end(), block.begin(), block.end());
+      EXPECT_EQ(sorted(after), sorted(expected)) << threads << " threads";
+      EXPECT_EQ(traversal.size(), static_cast<std::int64_t>(expected.size()));
+      // Nothing left to remove: a second pass with the same test removes nothing.
+      EXPECT_EQ(traversal.remove_if(culled), 0);
     });
   }
 }

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <fstream>
 #include <memory>
+#include <numeric>
 #include <numbers>
 
 #include "tailor/bvh/aabb.hpp"
@@ -110,7 +111,17 @@ double floor_ms(const FaceArray& faces, const Positions& x0, const Positions& x1
       .count();
 }
 
-ScaleRow measure(const std::string& name, const ScaleScene& scene, int threads, int repetitions) {
+// Whether a configuration needs another timed run after `runs` runs taking `ms` in all.
+bool more_runs(const ScaleOptions& options, std::size_t runs, double ms) {
+  return static_cast<int>(runs) < options.repetitions || ms < 1e3 * options.min_seconds;
+}
+
+double sum(const std::vector<double>& values) {
+  return std::accumulate(values.begin(), values.end(), 0.0);
+}
+
+ScaleRow measure(const std::string& name, const ScaleScene& scene, int threads,
+                 const ScaleOptions& options) {
   ScaleRow row;
   row.scene = name;
   row.threads = threads;
@@ -124,7 +135,7 @@ ScaleRow measure(const std::string& name, const ScaleScene& scene, int threads, 
     detector.detect(scene.mesh.vertices, scene.x1);  // warm-up: buffers reach their size
     std::vector<double> refit, traversal, radial, low, ccd, total;
     DetectionStats stats;
-    for (int r = 0; r < repetitions; ++r) {
+    while (more_runs(options, total.size(), sum(total))) {
       stats = detector.detect(scene.mesh.vertices, scene.x1).stats;
       refit.push_back(stats.refit_ms), traversal.push_back(stats.traversal_ms);
       radial.push_back(stats.radial_view_ms);
@@ -143,7 +154,7 @@ ScaleRow measure(const std::string& name, const ScaleScene& scene, int threads, 
   tbb::task_arena arena(threads);
   floor_ms(scene.mesh.faces, scene.mesh.vertices, scene.x1, boxes, arena);  // warm-up
   std::vector<double> floor;
-  for (int r = 0; r < repetitions; ++r) {
+  while (more_runs(options, floor.size(), sum(floor))) {
     floor.push_back(floor_ms(scene.mesh.faces, scene.mesh.vertices, scene.x1, boxes, arena));
   }
   row.floor_ms = median(floor);
@@ -188,7 +199,7 @@ std::vector<ScaleRow> run_scale_benchmark(const ScaleOptions& options) {
           options.progress(fmt::format("{} {} triangles, {} thread{}", name,
                                        scene.mesh.faces.rows(), threads, threads > 1 ? "s" : ""));
         }
-        rows.push_back(measure(name, scene, threads, options.repetitions));
+        rows.push_back(measure(name, scene, threads, options));
       }
     }
   }

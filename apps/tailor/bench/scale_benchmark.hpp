@@ -44,7 +44,11 @@ struct ScaleOptions {
   Index min_triangles = 10'000;
   Index max_triangles = 1'000'000;
   std::vector<int> threads = {1, 2};
-  int repetitions = 3;  ///< timed steps per configuration (the median is kept)
+  int repetitions = 3;  ///< timed steps per configuration, at least (the median is kept)
+  /// More steps while a configuration's timed steps took less than this (s): a step of a
+  /// few milliseconds varies by more than the thread scaling it should show when it is
+  /// timed only three times.
+  double min_seconds = 0.5;
   std::function<void(const std::string&)> progress;  ///< called before each configuration
 };
 

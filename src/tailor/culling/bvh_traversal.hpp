@@ -67,18 +67,44 @@ class CandidateTraversal {
   /// from several threads at once.
   template <class Culled>
   std::int64_t remove_if(const Culled& culled) {
+    // In chunks of kCullChunk pairs, not whole blocks: a step with few pairs has one
+    // block per thread, often of very different sizes, and the test per pair is costly
+    // (radial view's moving edge planes), so whole blocks left one thread doing most of
+    // the work. Then each block is compacted by its flags.
     std::vector<std::vector<TrianglePair>*> used_blocks;
     for (ThreadOutput& out : m_outputs) {
       for (std::size_t b = 0; b < out.used; ++b) used_blocks.push_back(&out.blocks[b]);
     }
+    std::vector<std::size_t> first_chunk(used_blocks.size() + 1, 0);  // per block
+    std::vector<std::size_t> first_flag(used_blocks.size() + 1, 0);
+    for (std::size_t b = 0; b < used_blocks.size(); ++b) {
+      const std::size_t n = used_blocks[b]->size();
+      first_chunk[b + 1] = first_chunk[b] + (n + kCullChunk - 1) / kCullChunk;
+      first_flag[b + 1] = first_flag[b] + n;
+    }
+    m_culled_flags.assign(first_flag.back(), 0);
+    tbb::parallel_for(std::size_t{0}, first_chunk.back(), [&](std::size_t chunk) {
+      const auto b =
+          static_cast<std::size_t>(std::upper_bound(first_chunk.begin(), first_chunk.end(), chunk) -
+                                   first_chunk.begin() - 1);
+      const std::vector<TrianglePair>& block = *used_blocks[b];
+      const std::size_t begin = (chunk - first_chunk[b]) * kCullChunk;
+      const std::size_t end = std::min(block.size(), begin + kCullChunk);
+      for (std::size_t i = begin; i < end; ++i) {
+        m_culled_flags[first_flag[b] + i] = culled(block[i]) ? 1 : 0;
+      }
+    });
     tbb::combinable<std::int64_t> removed([] { return std::int64_t{0}; });
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, used_blocks.size(), 1),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                        for (std::size_t b = range.begin(); b != range.end(); ++b) {
-                          removed.local() +=
-                              static_cast<std::int64_t>(std::erase_if(*used_blocks[b], culled));
-                        }
-                      });
+    tbb::parallel_for(std::size_t{0}, used_blocks.size(), [&](std::size_t b) {
+      std::vector<TrianglePair>& block = *used_blocks[b];
+      const std::uint8_t* flag = m_culled_flags.data() + first_flag[b];
+      std::size_t kept = 0;
+      for (std::size_t i = 0; i < block.size(); ++i) {
+        if (flag[i] == 0) block[kept++] = block[i];
+      }
+      removed.local() += static_cast<std::int64_t>(block.size() - kept);
+      block.resize(kept);
+    });
     return removed.combine(std::plus<>());
   }
 
@@ -106,6 +132,8 @@ class CandidateTraversal {
  private:
   // Pairs per block (256 KiB).
   static constexpr std::size_t kBlockPairs = std::size_t{1} << 15;
+  // Pairs per task of remove_if().
+  static constexpr std::size_t kCullChunk = 256;
   struct ThreadOutput {
     std::vector<std::vector<TrianglePair>> blocks;  // reserved to kBlockPairs each
     std::size_t used = 0;                           // blocks in use (the last may be partial)
@@ -123,6 +151,7 @@ class CandidateTraversal {
 
   const TriangleMesh* m_mesh;
   tbb::enumerable_thread_specific<ThreadOutput> m_outputs;
+  std::vector<std::uint8_t> m_culled_flags;  // remove_if(): one per pair, reused
 };
 
 }  // namespace tailor

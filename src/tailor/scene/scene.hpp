@@ -47,12 +47,12 @@ struct SceneConfig {
   }();
   double time_step = 1.0 / 30.0;  ///< frame duration (s)
   /// Implicit steps per frame. One is enough for the sleeve: the strain limiter holds
-  /// every edge within its limit and the contact solver certifies every step, and three
-  /// (the former default) gave the same strains and extents at 2.6× the time
+  /// every edge within its limit and the contact solver certifies every step; three (the
+  /// former default) took 2.6-3.3× as long for strains and extents no better
   /// (docs/simulation.md).
   int substeps = 1;
-  int frames = 80;                ///< frames to simulate
-  Vec3 gravity{0, -9.81, 0};      ///< m/s² (-y is down)
+  int frames = 80;            ///< frames to simulate
+  Vec3 gravity{0, -9.81, 0};  ///< m/s² (-y is down)
 };
 
 /// Parses a scene from JSON. `source` names the file in error messages. Throws
