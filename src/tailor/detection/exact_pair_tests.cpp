@@ -4,15 +4,12 @@
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <vector>
 
 #include "tailor/ccd/ccd.hpp"
 
 namespace tailor {
 namespace {
-
-// Pairs per task: large enough to amortise scheduling, small enough to balance the
-// uneven cost of queries (most are cheap, a few reach the exact path).
-constexpr std::size_t kGrain = 256;
 
 EdgeEdgeCollision make_edge_edge(const EdgeArray& edges, Index e1, Index e2, double toi) {
   // Edges are stored (a, b) with a < b; order the two edges by their vertex ids.
@@ -46,35 +43,59 @@ void ExactPairTester::begin_step() {
 void ExactPairTester::test(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
                            std::span<const VertexFacePair> vertex_face,
                            std::span<const EdgeEdgePair> edge_edge) {
+  const std::span<const VertexFacePair> vf_blocks[1] = {vertex_face};
+  const std::span<const EdgeEdgePair> ee_blocks[1] = {edge_edge};
+  test(mesh, x0, x1, vf_blocks, ee_blocks);
+}
+
+void ExactPairTester::test(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
+                           std::span<const std::span<const VertexFacePair>> vertex_face_blocks,
+                           std::span<const std::span<const EdgeEdgePair>> edge_edge_blocks) {
+  // One task per chunk of a block: VF chunks first, then EE chunks.
+  struct Chunk {
+    bool edge_edge;
+    std::size_t block, begin, end;
+  };
+  std::vector<Chunk> chunks;
+  const auto add_chunks = [&](bool edge_edge, std::size_t block, std::size_t size) {
+    for (std::size_t begin = 0; begin < size; begin += kChunkPairs) {
+      chunks.push_back({edge_edge, block, begin, std::min(size, begin + kChunkPairs)});
+    }
+  };
+  for (std::size_t b = 0; b < vertex_face_blocks.size(); ++b) {
+    add_chunks(false, b, vertex_face_blocks[b].size());
+  }
+  for (std::size_t b = 0; b < edge_edge_blocks.size(); ++b) {
+    add_chunks(true, b, edge_edge_blocks[b].size());
+  }
   const FaceArray& faces = mesh.faces();
   const EdgeArray& edges = mesh.edges();
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, vertex_face.size(), kGrain), [&](const auto& range) {
-        ThreadOutput& out = m_outputs.local();
-        for (std::size_t i = range.begin(); i < range.end(); ++i) {
-          const auto [v, f] = vertex_face[i];
-          const Index a = faces(f, 0), b = faces(f, 1), c = faces(f, 2);
-          const CcdResult result = vertex_face_ccd({x0.row(v), x0.row(a), x0.row(b), x0.row(c),
-                                                    x1.row(v), x1.row(a), x1.row(b), x1.row(c)});
-          out.exact += result.path == CcdPath::exact || result.path == CcdPath::gmp;
-          if (result.hit) out.vertex_face.push_back({v, f, result.toi});
-        }
-      });
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, edge_edge.size(), kGrain), [&](const auto& range) {
-        ThreadOutput& out = m_outputs.local();
-        for (std::size_t i = range.begin(); i < range.end(); ++i) {
-          const auto [e1, e2] = edge_edge[i];
-          const Index a = edges(e1, 0), b = edges(e1, 1);
-          const Index c = edges(e2, 0), d = edges(e2, 1);
-          const CcdResult result = edge_edge_ccd({x0.row(a), x0.row(b), x0.row(c), x0.row(d),
-                                                  x1.row(a), x1.row(b), x1.row(c), x1.row(d)});
-          out.exact += result.path == CcdPath::exact || result.path == CcdPath::gmp;
-          if (result.hit) {
-            out.edge_edge.push_back({e1, e2, result.toi});
-          }
-        }
-      });
+  tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t k) {
+    const Chunk& chunk = chunks[k];
+    ThreadOutput& out = m_outputs.local();
+    if (!chunk.edge_edge) {
+      const std::span<const VertexFacePair> pairs = vertex_face_blocks[chunk.block];
+      for (std::size_t i = chunk.begin; i < chunk.end; ++i) {
+        const auto [v, f] = pairs[i];
+        const Index a = faces(f, 0), b = faces(f, 1), c = faces(f, 2);
+        const CcdResult result = vertex_face_ccd({x0.row(v), x0.row(a), x0.row(b), x0.row(c),
+                                                  x1.row(v), x1.row(a), x1.row(b), x1.row(c)});
+        out.exact += result.path == CcdPath::exact || result.path == CcdPath::gmp;
+        if (result.hit) out.vertex_face.push_back({v, f, result.toi});
+      }
+    } else {
+      const std::span<const EdgeEdgePair> pairs = edge_edge_blocks[chunk.block];
+      for (std::size_t i = chunk.begin; i < chunk.end; ++i) {
+        const auto [e1, e2] = pairs[i];
+        const Index a = edges(e1, 0), b = edges(e1, 1);
+        const Index c = edges(e2, 0), d = edges(e2, 1);
+        const CcdResult result = edge_edge_ccd({x0.row(a), x0.row(b), x0.row(c), x0.row(d),
+                                                x1.row(a), x1.row(b), x1.row(c), x1.row(d)});
+        out.exact += result.path == CcdPath::exact || result.path == CcdPath::gmp;
+        if (result.hit) out.edge_edge.push_back({e1, e2, result.toi});
+      }
+    }
+  });
 }
 
 CollisionSet ExactPairTester::take_collisions(const TriangleMesh& mesh) {

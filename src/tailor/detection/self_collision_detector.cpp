@@ -110,13 +110,7 @@ struct SelfCollisionDetector::Impl {
   // One round: the pairs the generator holds through the exact CCD.
   void test_round(const Positions& x0, const Positions& x1, DetectionStats& stats) {
     const auto start = Clock::now();
-    const auto vf_blocks = generator.vertex_face_blocks();
-    const auto ee_blocks = generator.edge_edge_blocks();
-    for (std::size_t b = 0; b < std::max(vf_blocks.size(), ee_blocks.size()); ++b) {
-      tester.test(mesh, x0, x1,
-                  b < vf_blocks.size() ? vf_blocks[b] : std::span<const VertexFacePair>{},
-                  b < ee_blocks.size() ? ee_blocks[b] : std::span<const EdgeEdgePair>{});
-    }
+    tester.test(mesh, x0, x1, generator.vertex_face_blocks(), generator.edge_edge_blocks());
     stats.ccd_ms += elapsed_ms(start);
   }
 
