@@ -1,6 +1,7 @@
 /// @file
 /// The projection out of the implicit arm: the clearance cache (a Lipschitz bound) must
-/// decide exactly as the uncached projection, over repeated perturb-and-project rounds.
+/// decide exactly as the uncached projection, over repeated perturb-and-project rounds;
+/// and projecting a projected state again moves nothing.
 
 #include <gtest/gtest.h>
 
@@ -53,6 +54,34 @@ TEST(ArmCollision, ClearanceCacheDecidesExactlyAsTheQueries) {
     projected += a.projected;
   }
   EXPECT_GT(projected, 0);  // the rounds did move vertices out of the arm
+}
+
+TEST(ArmCollision, ProjectingAProjectedStateAgainMovesNothing) {
+  // The strain limiter stops only when a sweep corrects no edge and the projection that
+  // follows moves no vertex: a vertex just projected onto the margin (up to rounding)
+  // must not count as inside it the next time.
+  const Arm arm;
+  ArmPose pose;
+  pose.elbow_flexion = 1.2;
+  const ArmSkeleton s = arm.skeleton(pose);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const Eigen::Index n = tailor::testing::sanitized() ? 500 : 5000;
+  Positions x(n, 3);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double along = 0.55 * (0.5 + 0.5 * unit(rng));
+    const Vec3 axis = along < 0.3 ? Vec3(s.upper_arm * Vec3(along, 0, 0))
+                                  : Vec3(s.forearm * Vec3(along - 0.3, 0, 0));
+    x.row(i) = (axis + 0.06 * Vec3(unit(rng), unit(rng), unit(rng))).transpose();
+  }
+  const double margin = 0.003;
+  const Positions x0 = x;
+  const ArmCollisionStats first = project_out_of_arm(arm, s, s, x0, x, margin, 0.0, {});
+  ASSERT_GT(first.projected, n / 4);  // most points started inside the arm
+  const Positions projected = x;
+  const ArmCollisionStats again = project_out_of_arm(arm, s, s, x0, x, margin, 0.0, {});
+  EXPECT_EQ(again.projected, 0);
+  EXPECT_TRUE(x == projected);
 }
 
 }  // namespace
