@@ -13,6 +13,21 @@
 namespace tailor {
 namespace {
 
+/// `n` random points along the bones of the arm in skeleton `s`, each coordinate up to
+/// `spread` from the bone's axis.
+Positions points_around_arm(const ArmSkeleton& s, Eigen::Index n, double spread,
+                            std::mt19937& rng) {
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  Positions x(n, 3);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double along = 0.55 * (0.5 + 0.5 * unit(rng));
+    const Vec3 axis = along < 0.3 ? Vec3(s.upper_arm * Vec3(along, 0, 0))
+                                  : Vec3(s.forearm * Vec3(along - 0.3, 0, 0));
+    x.row(i) = (axis + spread * Vec3(unit(rng), unit(rng), unit(rng))).transpose();
+  }
+  return x;
+}
+
 TEST(ArmCollision, ClearanceCacheDecidesExactlyAsTheQueries) {
   const Arm arm;
   ArmPose pose0, pose1;
@@ -23,13 +38,7 @@ TEST(ArmCollision, ClearanceCacheDecidesExactlyAsTheQueries) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   const Eigen::Index n = tailor::testing::sanitized() ? 300 : 2000;
   // Points around the arm, many within a few centimetres of its surface.
-  Positions x0(n, 3);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double along = 0.55 * (0.5 + 0.5 * unit(rng));
-    const Vec3 axis = along < 0.3 ? Vec3(s1.upper_arm * Vec3(along, 0, 0))
-                                  : Vec3(s1.forearm * Vec3(along - 0.3, 0, 0));
-    x0.row(i) = (axis + 0.07 * Vec3(unit(rng), unit(rng), unit(rng))).transpose();
-  }
+  const Positions x0 = points_around_arm(s1, n, 0.07, rng);
   const double margin = 0.008;
   Positions plain = x0, cached = x0;
   ArmClearanceCache cache;
@@ -65,15 +74,8 @@ TEST(ArmCollision, ProjectingAProjectedStateAgainMovesNothing) {
   pose.elbow_flexion = 1.2;
   const ArmSkeleton s = arm.skeleton(pose);
   std::mt19937 rng(5);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
   const Eigen::Index n = tailor::testing::sanitized() ? 500 : 5000;
-  Positions x(n, 3);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double along = 0.55 * (0.5 + 0.5 * unit(rng));
-    const Vec3 axis = along < 0.3 ? Vec3(s.upper_arm * Vec3(along, 0, 0))
-                                  : Vec3(s.forearm * Vec3(along - 0.3, 0, 0));
-    x.row(i) = (axis + 0.06 * Vec3(unit(rng), unit(rng), unit(rng))).transpose();
-  }
+  Positions x = points_around_arm(s, n, 0.06, rng);
   const double margin = 0.003;
   const Positions x0 = x;
   const ArmCollisionStats first = project_out_of_arm(arm, s, s, x0, x, margin, 0.0, {});
