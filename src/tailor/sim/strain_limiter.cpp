@@ -162,9 +162,11 @@ StrainLimitStats StrainLimiter::apply(Positions& x, int max_sweeps,
   for (int s = 0; s < max_sweeps; ++s) {
     const std::int64_t before = stats.corrections;
     const double relaxation = last_worst > kOverRelaxedAbove * m_max_strain ? kOverRelaxation : 1.0;
-    if (m_accelerated) current = x;
+    // The states two sweeps back are kept only from where extrapolation may start.
+    const bool keep_states = m_accelerated && s + 1 >= kChebyshevFrom;
+    if (keep_states) current = x;
     const double worst = sweep(x, s % 2 == 0, relaxation, stats.corrections);
-    if (m_accelerated) {
+    if (keep_states) {
       constexpr double rho2 = kChebyshevRadius * kChebyshevRadius;
       // Only after a sweep that corrected something: a state within the limit has
       // nothing to accelerate, and extrapolating would replay the constraint's last move.
