@@ -54,6 +54,7 @@
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
+#include <tbb/parallel_invoke.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -127,7 +128,7 @@ struct ContactSolver::Impl {
   const Positions* x0 = nullptr;
   const KinematicObstacle* arm = nullptr;
   Positions pinned_x1;
-  double self_detect_ms = 0;
+  double detect_ms = 0;  // wall time of this call's detect() passes
   std::unordered_map<Index, Vec3> arm_targets;
   UnionFind zones;
   std::vector<char> follows, in_zone;
@@ -156,7 +157,6 @@ struct ContactSolver::Impl {
   ContactStats resolve(const Positions& X0, Positions& x1, const KinematicObstacle& obstacle,
                        double dt) {
     const auto start = Clock::now();
-    const double obstacle_ms_before = obstacle_detector.total_ms();
     begin(X0, x1, obstacle, dt);
     ContactStats stats;
     stats.repulsions = repel(x1);
@@ -164,7 +164,7 @@ struct ContactSolver::Impl {
     if (!clean) clean = merge_impact_zones(x1, stats);
     if (!clean) last_resort(x1, stats);
     finish(x1, stats);
-    stats.detection_ms = self_detect_ms + obstacle_detector.total_ms() - obstacle_ms_before;
+    stats.detection_ms = detect_ms;
     stats.response_ms = std::max(0.0, ms_since(start) - stats.detection_ms);
     return stats;
   }
@@ -180,7 +180,7 @@ struct ContactSolver::Impl {
     arm = obstacle.mesh != nullptr ? &obstacle : nullptr;
     if (arm != nullptr) obstacle_detector.set_obstacle(*obstacle.mesh, obstacle.x0, obstacle.x1);
     pinned_x1 = x1;
-    self_detect_ms = 0;
+    detect_ms = 0;
     arm_targets.clear();
     const Index n = cloth.num_vertices();
     zones = UnionFind(n);
@@ -190,10 +190,17 @@ struct ContactSolver::Impl {
 
   /// Every collision of the step x0 -> x1 (the certificate of a pass when empty).
   PassCollisions detect(const Positions& x1) {
+    const auto start = Clock::now();
     PassCollisions c;
-    if (arm != nullptr) c.obstacle = obstacle_detector.detect(*x0, x1);
-    c.self = detector.detect(*x0, x1);
-    self_detect_ms += c.self.stats.total_ms;
+    // The two detectors share nothing but the read-only positions, and neither fills two
+    // cores on a sleeve-sized mesh: run side by side (default elbow: the arm's 0.9 ms and
+    // the cloth's 0.5 ms per pass, one after the other before).
+    tbb::parallel_invoke(
+        [&] {
+          if (arm != nullptr) c.obstacle = obstacle_detector.detect(*x0, x1);
+        },
+        [&] { c.self = detector.detect(*x0, x1); });
+    detect_ms += ms_since(start);
     return c;
   }
 
