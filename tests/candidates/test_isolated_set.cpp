@@ -1,0 +1,99 @@
+// The isolated set equals its definition, enumerated by brute force over every feature
+// pair, on meshes with few and many orphans (regular grids, thin tubes, poles of high
+// valence, non-manifold edges, bow-ties, a lone triangle).
+
+#include "tailor/candidates/isolated_set.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "tailor/mesh/procedural_meshes.hpp"
+
+namespace tailor {
+namespace {
+
+using Pairs = std::set<std::pair<Index, Index>>;
+
+// VF pairs (v, g), v not in g and v on some face, whose every face around v shares a
+// vertex with g; EE pairs e1 < e2 without a common vertex whose every pair of incident
+// faces shares a vertex.
+std::pair<Pairs, Pairs> by_definition(const TriangleMesh& mesh) {
+  Pairs vf, ee;
+  for (Index v = 0; v < mesh.num_vertices(); ++v) {
+    if (mesh.vertex_faces(v).empty()) continue;
+    for (Index g = 0; g < mesh.num_faces(); ++g) {
+      const auto face = mesh.faces().row(g);
+      if (face[0] == v || face[1] == v || face[2] == v) continue;
+      bool every_face_touches = true;
+      for (Index f : mesh.vertex_faces(v)) every_face_touches &= mesh.faces_share_vertex(f, g);
+      if (every_face_touches) vf.insert({v, g});
+    }
+  }
+  const EdgeArray& edges = mesh.edges();
+  for (Index e1 = 0; e1 < mesh.num_edges(); ++e1) {
+    for (Index e2 = e1 + 1; e2 < mesh.num_edges(); ++e2) {
+      if (edges(e1, 0) == edges(e2, 0) || edges(e1, 0) == edges(e2, 1) ||
+          edges(e1, 1) == edges(e2, 0) || edges(e1, 1) == edges(e2, 1)) {
+        continue;
+      }
+      bool every_pair_touches = true;
+      for (Index f1 : mesh.edge_faces(e1)) {
+        for (Index f2 : mesh.edge_faces(e2)) every_pair_touches &= mesh.faces_share_vertex(f1, f2);
+      }
+      if (every_pair_touches) ee.insert({e1, e2});
+    }
+  }
+  return {vf, ee};
+}
+
+TriangleMesh mesh_of(const MeshData& data) {
+  return TriangleMesh(static_cast<Index>(data.vertices.rows()), data.faces);
+}
+
+TriangleMesh mesh_of(Index vertices, std::initializer_list<std::array<Index, 3>> faces) {
+  FaceArray array(static_cast<Index>(faces.size()), 3);
+  Index row = 0;
+  for (const auto& face : faces) array.row(row++) << face[0], face[1], face[2];
+  return TriangleMesh(vertices, array);
+}
+
+TEST(IsolatedSet, EqualsItsDefinitionByBruteForce) {
+  const std::vector<std::pair<std::string, TriangleMesh>> meshes = [] {
+    std::vector<std::pair<std::string, TriangleMesh>> m;
+    m.emplace_back("grid", mesh_of(make_grid(6, 5, 1.0, 1.0)));
+    m.emplace_back("tube of 3", mesh_of(make_tube(5, 3, 0.3, 1.0)));
+    m.emplace_back("tube of 4", mesh_of(make_tube(4, 4, 0.3, 1.0)));
+    m.emplace_back("tube of 6", mesh_of(make_tube(4, 6, 0.3, 1.0)));
+    m.emplace_back("sphere", mesh_of(make_sphere(4, 5, 0.5)));
+    m.emplace_back("small sphere", mesh_of(make_sphere(2, 3, 0.5)));
+    // Three faces on one edge, a bow-tie through vertex 0, a lone triangle, and an
+    // unreferenced vertex (9).
+    m.emplace_back("non-manifold",
+                   mesh_of(10, {{0, 1, 2}, {0, 1, 3}, {0, 1, 4}, {0, 5, 6}, {7, 8, 2}, {2, 3, 4}}));
+    m.emplace_back("lone triangle", mesh_of(3, {{0, 1, 2}}));
+    return m;
+  }();
+  std::size_t total_vf = 0, total_ee = 0;
+  for (const auto& [name, mesh] : meshes) {
+    const auto [vf, ee] = by_definition(mesh);
+    const IsolatedSet set = IsolatedSet::build(mesh);
+    Pairs built_vf, built_ee;
+    for (const VertexFacePair& p : set.vertex_face) {
+      EXPECT_TRUE(built_vf.insert({p.vertex, p.face}).second) << name << ": VF listed twice";
+    }
+    for (const EdgeEdgePair& p : set.edge_edge) {
+      EXPECT_TRUE(built_ee.insert({p.edge_a, p.edge_b}).second) << name << ": EE listed twice";
+    }
+    EXPECT_EQ(built_vf, vf) << name;
+    EXPECT_EQ(built_ee, ee) << name;
+    total_vf += vf.size();
+    total_ee += ee.size();
+  }
+  // The meshes do have orphans of both kinds.
+  EXPECT_GT(total_vf, 20u);
+  EXPECT_GT(total_ee, 20u);
+}
+
+}  // namespace
+}  // namespace tailor
