@@ -30,13 +30,9 @@ std::pair<Pairs, Pairs> by_definition(const TriangleMesh& mesh) {
       if (every_face_touches) vf.insert({v, g});
     }
   }
-  const EdgeArray& edges = mesh.edges();
   for (Index e1 = 0; e1 < mesh.num_edges(); ++e1) {
     for (Index e2 = e1 + 1; e2 < mesh.num_edges(); ++e2) {
-      if (edges(e1, 0) == edges(e2, 0) || edges(e1, 0) == edges(e2, 1) ||
-          edges(e1, 1) == edges(e2, 0) || edges(e1, 1) == edges(e2, 1)) {
-        continue;
-      }
+      if (mesh.edges_share_vertex(e1, e2)) continue;
       bool every_pair_touches = true;
       for (Index f1 : mesh.edge_faces(e1)) {
         for (Index f2 : mesh.edge_faces(e2)) every_pair_touches &= mesh.faces_share_vertex(f1, f2);

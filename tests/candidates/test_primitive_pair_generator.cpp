@@ -65,13 +65,9 @@ void expect_every_pair(const TriangleMesh& mesh, const Counted& counted, bool ex
       ++vf;
     }
   }
-  const EdgeArray& edges = mesh.edges();
   for (Index e1 = 0; e1 < mesh.num_edges(); ++e1) {
     for (Index e2 = e1 + 1; e2 < mesh.num_edges(); ++e2) {
-      if (edges(e1, 0) == edges(e2, 0) || edges(e1, 0) == edges(e2, 1) ||
-          edges(e1, 1) == edges(e2, 0) || edges(e1, 1) == edges(e2, 1)) {
-        continue;
-      }
+      if (mesh.edges_share_vertex(e1, e2)) continue;
       const auto it = counted.edge_edge.find({e1, e2});
       const int n = it == counted.edge_edge.end() ? 0 : it->second;
       ASSERT_TRUE(exactly_once ? n == 1 : n >= 1)

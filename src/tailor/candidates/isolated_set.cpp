@@ -12,11 +12,6 @@ bool face_has_vertex(const TriangleMesh& mesh, Index f, Index v) {
   return face[0] == v || face[1] == v || face[2] == v;
 }
 
-bool edges_share_vertex(const TriangleMesh& mesh, Index e1, Index e2) {
-  const auto a = mesh.edges().row(e1), b = mesh.edges().row(e2);
-  return a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1];
-}
-
 // Faces sharing a vertex with some face around the vertices in `seeds`, sorted, unique.
 void faces_near(const TriangleMesh& mesh, std::span<const Index> seed_faces,
                 std::vector<Index>& out) {
@@ -91,7 +86,7 @@ IsolatedSet IsolatedSet::build(const TriangleMesh& mesh) {
         std::vector<Index> candidates;
         for (Index g : near) {
           for (Index e2 : mesh.face_edges(g)) {
-            if (e2 > e1 && !edges_share_vertex(mesh, e1, e2)) candidates.push_back(e2);
+            if (e2 > e1 && !mesh.edges_share_vertex(e1, e2)) candidates.push_back(e2);
           }
         }
         std::sort(candidates.begin(), candidates.end());

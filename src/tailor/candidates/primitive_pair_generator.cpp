@@ -56,11 +56,6 @@ bool contains(const Index* face, Index v) {
   return face[0] == v || face[1] == v || face[2] == v;
 }
 
-bool edges_share_vertex(const EdgeArray& edges, Index e1, Index e2) {
-  return edges(e1, 0) == edges(e2, 0) || edges(e1, 0) == edges(e2, 1) ||
-         edges(e1, 1) == edges(e2, 0) || edges(e1, 1) == edges(e2, 1);
-}
-
 // A pair past the boxes, waiting for the filters, which evaluate the coplanarity cubic of
 // CoplanarityBatch::kCapacity pairs at once (coplanarity_bernstein_batch).
 struct PendingPair {
@@ -141,24 +136,22 @@ class Stages {
     for (int i = 0; i < batch.count; ++i) {
       const PendingPair& pair = out.pending[i];
       const Corner* c = pair.corner;
+      const ConstVec3 x0[4] = {ConstVec3(c[0].t0), ConstVec3(c[1].t0), ConstVec3(c[2].t0),
+                               ConstVec3(c[3].t0)};
+      const ConstVec3 x1[4] = {ConstVec3(c[0].t1), ConstVec3(c[1].t1), ConstVec3(c[2].t1),
+                               ConstVec3(c[3].t1)};
+      const PairVerdict verdict =
+          pair.vertex_face ? vertex_face_verdict(x0[0], x0[1], x0[2], x0[3], x1[0], x1[1], x1[2],
+                                                 x1[3], terms[i], m_filters)
+                           : edge_edge_verdict(x0[0], x0[1], x0[2], x0[3], x1[0], x1[1], x1[2],
+                                               x1[3], terms[i], m_filters);
+      if (verdict == PairVerdict::never_coplanar) continue;
+      ++(pair.vertex_face ? out.counts.vf_after_filter : out.counts.ee_after_filter);
+      if (verdict == PairVerdict::apart_in_projection) continue;
       if (pair.vertex_face) {
-        const PairVerdict verdict =
-            vertex_face_verdict(ConstVec3(c[0].t0), ConstVec3(c[1].t0), ConstVec3(c[2].t0),
-                                ConstVec3(c[3].t0), ConstVec3(c[0].t1), ConstVec3(c[1].t1),
-                                ConstVec3(c[2].t1), ConstVec3(c[3].t1), terms[i], m_filters);
-        if (verdict == PairVerdict::never_coplanar) continue;
-        ++out.counts.vf_after_filter;
-        if (verdict == PairVerdict::apart_in_projection) continue;
         ++out.counts.vf_after_projection;
         out.vertex_face.push_back({pair.first, pair.second});
       } else {
-        const PairVerdict verdict =
-            edge_edge_verdict(ConstVec3(c[0].t0), ConstVec3(c[1].t0), ConstVec3(c[2].t0),
-                              ConstVec3(c[3].t0), ConstVec3(c[0].t1), ConstVec3(c[1].t1),
-                              ConstVec3(c[2].t1), ConstVec3(c[3].t1), terms[i], m_filters);
-        if (verdict == PairVerdict::never_coplanar) continue;
-        ++out.counts.ee_after_filter;
-        if (verdict == PairVerdict::apart_in_projection) continue;
         ++out.counts.ee_after_projection;
         out.edge_edge.push_back({pair.first, pair.second});
       }
@@ -215,7 +208,7 @@ class Stages {
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) {
         const Index ef = edges_f[i], eg = edges_g[j];
-        if (!disjoint && edges_share_vertex(m_mesh.edges(), ef, eg)) continue;
+        if (!disjoint && m_mesh.edges_share_vertex(ef, eg)) continue;
         if (!owes_edge_edge(f, i, ef, face[0], g, j, eg, face[1], disjoint)) continue;
         // Edge i of a face joins its corners i and i+1.
         const int i1 = (i + 1) % 3, j1 = (j + 1) % 3;

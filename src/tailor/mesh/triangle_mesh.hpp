@@ -75,6 +75,11 @@ class TriangleMesh {
 
   /// True when faces `f` and `g` share at least one vertex (`f == g` included).
   bool faces_share_vertex(Index f, Index g) const;
+  /// True when edges `e1` and `e2` share an endpoint (`e1 == e2` included).
+  bool edges_share_vertex(Index e1, Index e2) const {
+    const auto a = m_edges.row(e1), b = m_edges.row(e2);
+    return a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1];
+  }
 
   /// Warnings found while building.
   const MeshValidation& validation() const { return m_validation; }
