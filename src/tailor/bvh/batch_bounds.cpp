@@ -3,7 +3,7 @@
 #include <cstring>
 #include <limits>
 
-#include "tailor/geometry/lane_vectors.hpp"
+#include "tailor/bvh/lane_vectors.hpp"
 
 namespace tailor {
 namespace {

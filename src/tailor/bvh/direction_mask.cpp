@@ -2,7 +2,7 @@
 
 #include <cstdint>
 
-#include "tailor/geometry/lane_vectors.hpp"
+#include "tailor/bvh/lane_vectors.hpp"
 
 namespace tailor {
 namespace {

@@ -3,10 +3,8 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <array>
 
 #include "tailor/candidates/projection_filter.hpp"
-#include "tailor/geometry/coplanarity_batch.hpp"
 
 namespace tailor {
 namespace {
@@ -56,20 +54,10 @@ bool contains(const Index* face, Index v) {
   return face[0] == v || face[1] == v || face[2] == v;
 }
 
-// A pair past the boxes, waiting for the filters, which evaluate the coplanarity cubic of
-// CoplanarityBatch::kCapacity pairs at once (coplanarity_bernstein_batch).
-struct PendingPair {
-  bool vertex_face;
-  Index first, second;  // (vertex, face) or (edge, edge)
-  Corner corner[4];     // p, a, b, c or a, b, c, d
-};
-
 struct ThreadSink {
   std::vector<VertexFacePair>& vertex_face;
   std::vector<EdgeEdgePair>& edge_edge;
   LowLevelCounts& counts;
-  std::array<PendingPair, CoplanarityBatch::kCapacity> pending{};
-  int pending_count = 0;
 };
 
 // The stages after feature assignment, for one step.
@@ -86,20 +74,25 @@ class Stages {
 
   Corner at(Index v) const { return corner(m_x0, m_x1, v); }
 
-  // Boxes for VF pair (v, f), the face's corners a, b, c; `p_box` and `face_box` are
-  // their swept boxes. The filters follow in batches (filter()).
+  // Boxes, DNF and projection filters for VF pair (v, f), the face's corners a, b, c;
+  // `p_box` and `face_box` are their swept boxes.
   void vertex_face(Index v, Index f, Corner p, Corner a, Corner b, Corner c, const Box& p_box,
                    const Box& face_box, ThreadSink& out) const {
     ++out.counts.vf_generated;
     if (m_options.primitive_boxes && !overlap(p_box, face_box)) return;
     ++out.counts.vf_after_boxes;
     if (m_filters.coplanarity || m_filters.projection) {
-      defer({true, v, f, {p, a, b, c}}, out);
+      const PairVerdict verdict = vertex_face_verdict(
+          ConstVec3(p.t0), ConstVec3(a.t0), ConstVec3(b.t0), ConstVec3(c.t0), ConstVec3(p.t1),
+          ConstVec3(a.t1), ConstVec3(b.t1), ConstVec3(c.t1), m_filters);
+      if (verdict == PairVerdict::never_coplanar) return;
+      ++out.counts.vf_after_filter;
+      if (verdict == PairVerdict::apart_in_projection) return;
     } else {
       ++out.counts.vf_after_filter;
-      ++out.counts.vf_after_projection;
-      out.vertex_face.push_back({v, f});
     }
+    ++out.counts.vf_after_projection;
+    out.vertex_face.push_back({v, f});
   }
 
   // The same for EE pair (e1, e2), e1 < e2, edges ab and cd.
@@ -109,54 +102,17 @@ class Stages {
     if (m_options.primitive_boxes && !overlap(box1, box2)) return;
     ++out.counts.ee_after_boxes;
     if (m_filters.coplanarity || m_filters.projection) {
-      defer({false, e1, e2, {a, b, c, d}}, out);
+      const PairVerdict verdict = edge_edge_verdict(
+          ConstVec3(a.t0), ConstVec3(b.t0), ConstVec3(c.t0), ConstVec3(d.t0), ConstVec3(a.t1),
+          ConstVec3(b.t1), ConstVec3(c.t1), ConstVec3(d.t1), m_filters);
+      if (verdict == PairVerdict::never_coplanar) return;
+      ++out.counts.ee_after_filter;
+      if (verdict == PairVerdict::apart_in_projection) return;
     } else {
       ++out.counts.ee_after_filter;
-      ++out.counts.ee_after_projection;
-      out.edge_edge.push_back({e1, e2});
     }
-  }
-
-  // The DNF and projection filters for the deferred pairs; a task calls it when done.
-  void filter(ThreadSink& out) const {
-    CoplanarityBatch batch;
-    batch.count = out.pending_count;
-    for (int i = 0; i < batch.count; ++i) {
-      const PendingPair& pair = out.pending[i];
-      // The coplanarity function's points: (a, b, c, p) for VF, (a, b, c, d) for EE.
-      const int order[2][4] = {{1, 2, 3, 0}, {0, 1, 2, 3}};
-      const int* points = order[pair.vertex_face ? 0 : 1];
-      for (int k = 0; k < 4; ++k) {
-        batch.points[i][k] = pair.corner[points[k]].t0;
-        batch.points[i][4 + k] = pair.corner[points[k]].t1;
-      }
-    }
-    std::array<CoplanarityTerms, CoplanarityBatch::kCapacity> terms;
-    coplanarity_bernstein_batch(batch, terms);
-    for (int i = 0; i < batch.count; ++i) {
-      const PendingPair& pair = out.pending[i];
-      const Corner* c = pair.corner;
-      const ConstVec3 x0[4] = {ConstVec3(c[0].t0), ConstVec3(c[1].t0), ConstVec3(c[2].t0),
-                               ConstVec3(c[3].t0)};
-      const ConstVec3 x1[4] = {ConstVec3(c[0].t1), ConstVec3(c[1].t1), ConstVec3(c[2].t1),
-                               ConstVec3(c[3].t1)};
-      const PairVerdict verdict =
-          pair.vertex_face ? vertex_face_verdict(x0[0], x0[1], x0[2], x0[3], x1[0], x1[1], x1[2],
-                                                 x1[3], terms[i], m_filters)
-                           : edge_edge_verdict(x0[0], x0[1], x0[2], x0[3], x1[0], x1[1], x1[2],
-                                               x1[3], terms[i], m_filters);
-      if (verdict == PairVerdict::never_coplanar) continue;
-      ++(pair.vertex_face ? out.counts.vf_after_filter : out.counts.ee_after_filter);
-      if (verdict == PairVerdict::apart_in_projection) continue;
-      if (pair.vertex_face) {
-        ++out.counts.vf_after_projection;
-        out.vertex_face.push_back({pair.first, pair.second});
-      } else {
-        ++out.counts.ee_after_projection;
-        out.edge_edge.push_back({pair.first, pair.second});
-      }
-    }
-    out.pending_count = 0;
+    ++out.counts.ee_after_projection;
+    out.edge_edge.push_back({e1, e2});
   }
 
   // A VF pair by ids (the isolated set).
@@ -229,11 +185,6 @@ class Stages {
   }
 
  private:
-  void defer(const PendingPair& pair, ThreadSink& out) const {
-    out.pending[out.pending_count++] = pair;
-    if (out.pending_count == CoplanarityBatch::kCapacity) filter(out);
-  }
-
   // Whether CTP (from, to) is the representative of VF pair (corner k of `from`, `to`).
   bool owes_vertex_face(Index from, int k, Index v, Index to, const Index* to_face,
                         bool disjoint) const {
@@ -318,7 +269,6 @@ void PrimitivePairGenerator::add_triangle_pairs(std::span<const TrianglePair> ct
     ThreadSink out{local.vertex_face, local.edge_edge, local.counts};
     for (std::size_t i = r.begin(); i < r.end(); ++i)
       stages.expand(ctps[i].first, ctps[i].second, out);
-    stages.filter(out);
   });
 }
 
@@ -332,7 +282,6 @@ void PrimitivePairGenerator::add_isolated(const IsolatedSet& isolated, const Pos
         for (std::size_t i = r.begin(); i < r.end(); ++i) {
           stages.vertex_face(isolated.vertex_face[i].vertex, isolated.vertex_face[i].face, out);
         }
-        stages.filter(out);
       });
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, isolated.edge_edge.size(), 1024), [&](const auto& r) {
@@ -341,7 +290,6 @@ void PrimitivePairGenerator::add_isolated(const IsolatedSet& isolated, const Pos
         for (std::size_t i = r.begin(); i < r.end(); ++i) {
           stages.edge_edge(isolated.edge_edge[i].edge_a, isolated.edge_edge[i].edge_b, out);
         }
-        stages.filter(out);
       });
 }
 

@@ -82,10 +82,14 @@ Quadratic bracket(const Moving& e, const Moving& w, int k) {
 // The coplanarity cubic f = [b-a, c-a, d-a] with its certified bounds, from the DNF
 // filter's evaluation (whose middle coefficients are 3β1, 3β2). False when out of range.
 // `undecided` tells whether a coefficient's sign is beyond the bound.
-bool coplanarity_cubic(const CoplanarityTerms& terms, Cubic& f, bool& undecided) {
-  if (!terms.ok) return false;
-  const double* value = terms.value;
-  const double* bound = terms.bound;
+bool coplanarity_cubic(const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0, const Vec3& d_t0,
+                       const Vec3& a_t1, const Vec3& b_t1, const Vec3& c_t1, const Vec3& d_t1,
+                       Cubic& f, bool& undecided) {
+  double value[4], bound[4];
+  if (!detail::coplanarity_bernstein_double(a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1, d_t1, value,
+                                            bound)) {
+    return false;
+  }
   undecided = false;
   for (int i = 0; i < 4; ++i) undecided |= bound[i] > 0 && std::fabs(value[i]) <= bound[i];
   f.value = {value[0], value[1] / 3, value[2] / 3, value[3]};
@@ -93,16 +97,6 @@ bool coplanarity_cubic(const CoplanarityTerms& terms, Cubic& f, bool& undecided)
   f.bound = {bound[0], 0.5 * bound[1] + 0x1p-53 * std::fabs(value[1]),
              0.5 * bound[2] + 0x1p-53 * std::fabs(value[2]), bound[3]};
   return true;
-}
-
-// The DNF filter's double evaluation of one quadruple.
-CoplanarityTerms coplanarity_terms(const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0,
-                                   const Vec3& d_t0, const Vec3& a_t1, const Vec3& b_t1,
-                                   const Vec3& c_t1, const Vec3& d_t1) {
-  CoplanarityTerms terms;
-  terms.ok = detail::coplanarity_bernstein_double(a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1, d_t1,
-                                                  terms.value, terms.bound);
-  return terms;
 }
 
 // A piece of the step is excluded when the polynomials' signs on it rule a contact out;
@@ -228,11 +222,10 @@ PairVerdict verdict(bool f_ok, const Cubic& f, bool undecided, PairFilters filte
 
 PairVerdict vertex_face_verdict(const Vec3& p_t0, const Vec3& a_t0, const Vec3& b_t0,
                                 const Vec3& c_t0, const Vec3& p_t1, const Vec3& a_t1,
-                                const Vec3& b_t1, const Vec3& c_t1, const CoplanarityTerms& terms,
-                                PairFilters filters) {
+                                const Vec3& b_t1, const Vec3& c_t1, PairFilters filters) {
   Cubic f;
   bool undecided = true;
-  const bool f_ok = coplanarity_cubic(terms, f, undecided);
+  const bool f_ok = coplanarity_cubic(a_t0, b_t0, c_t0, p_t0, a_t1, b_t1, c_t1, p_t1, f, undecided);
   return verdict(
       f_ok, f, undecided, filters,
       [&] { return vertex_face_apart(p_t0, a_t0, b_t0, c_t0, p_t1, a_t1, b_t1, c_t1, f); },
@@ -241,31 +234,14 @@ PairVerdict vertex_face_verdict(const Vec3& p_t0, const Vec3& a_t0, const Vec3& 
 
 PairVerdict edge_edge_verdict(const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0,
                               const Vec3& d_t0, const Vec3& a_t1, const Vec3& b_t1,
-                              const Vec3& c_t1, const Vec3& d_t1, const CoplanarityTerms& terms,
-                              PairFilters filters) {
+                              const Vec3& c_t1, const Vec3& d_t1, PairFilters filters) {
   Cubic f;
   bool undecided = true;
-  const bool f_ok = coplanarity_cubic(terms, f, undecided);
+  const bool f_ok = coplanarity_cubic(a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1, d_t1, f, undecided);
   return verdict(
       f_ok, f, undecided, filters,
       [&] { return edge_edge_apart(a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1, d_t1, f); },
       [&] { return coplanarity_sign(a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1, d_t1); });
-}
-
-PairVerdict vertex_face_verdict(const Vec3& p_t0, const Vec3& a_t0, const Vec3& b_t0,
-                                const Vec3& c_t0, const Vec3& p_t1, const Vec3& a_t1,
-                                const Vec3& b_t1, const Vec3& c_t1, PairFilters filters) {
-  return vertex_face_verdict(p_t0, a_t0, b_t0, c_t0, p_t1, a_t1, b_t1, c_t1,
-                             coplanarity_terms(a_t0, b_t0, c_t0, p_t0, a_t1, b_t1, c_t1, p_t1),
-                             filters);
-}
-
-PairVerdict edge_edge_verdict(const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0,
-                              const Vec3& d_t0, const Vec3& a_t1, const Vec3& b_t1,
-                              const Vec3& c_t1, const Vec3& d_t1, PairFilters filters) {
-  return edge_edge_verdict(a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1, d_t1,
-                           coplanarity_terms(a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1, d_t1),
-                           filters);
 }
 
 }  // namespace tailor

@@ -39,7 +39,6 @@
 
 #include <cstdint>
 
-#include "tailor/geometry/coplanarity_batch.hpp"
 #include "tailor/geometry/types.hpp"
 
 namespace tailor {
@@ -70,20 +69,6 @@ PairVerdict vertex_face_verdict(const Vec3& p_t0, const Vec3& a_t0, const Vec3& 
 PairVerdict edge_edge_verdict(const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0,
                               const Vec3& d_t0, const Vec3& a_t1, const Vec3& b_t1,
                               const Vec3& c_t1, const Vec3& d_t1, PairFilters filters);
-
-/// vertex_face_verdict() given the DNF filter's double evaluation of the points (a, b, c,
-/// p) (`terms`: coplanarity_bernstein_batch(), or detail::coplanarity_bernstein_double()):
-/// the same verdict, for callers that evaluate many pairs' terms at once.
-PairVerdict vertex_face_verdict(const Vec3& p_t0, const Vec3& a_t0, const Vec3& b_t0,
-                                const Vec3& c_t0, const Vec3& p_t1, const Vec3& a_t1,
-                                const Vec3& b_t1, const Vec3& c_t1, const CoplanarityTerms& terms,
-                                PairFilters filters);
-
-/// edge_edge_verdict() given the double evaluation of the points (a, b, c, d).
-PairVerdict edge_edge_verdict(const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0,
-                              const Vec3& d_t0, const Vec3& a_t1, const Vec3& b_t1,
-                              const Vec3& c_t1, const Vec3& d_t1, const CoplanarityTerms& terms,
-                              PairFilters filters);
 
 /// The projection filter alone: false only when vertex `p` certainly never touches the
 /// closed triangle `abc` (see the file comment); true when it may.

@@ -1,10 +1,10 @@
 #pragma once
 /// @file
-/// GCC/Clang vectors of W doubles for lane kernels, each lane one independent query
-/// (direction masks and leaf bounds of a MovingTriangleBatch in bvh/, the coplanarity
-/// filter of a CoplanarityBatch): W = 2 is the width of SSE2 (wider generic vectors are
-/// lowered lane by lane there); W = 4 is used only inside functions built for AVX2, chosen
-/// at run time (has_avx2()), where it maps to ymm registers. Not part of the public API.
+/// GCC/Clang vectors of W doubles for the lane kernels over a MovingTriangleBatch
+/// (direction_mask.cpp): W = 2 is the width of SSE2 (wider generic vectors
+/// are lowered lane by lane there); W = 4 is used only inside functions built for AVX2,
+/// chosen at run time (has_avx2()), where it maps to ymm registers. Internal to the bvh
+/// module.
 
 #include <cstdint>
 #include <cstring>
