@@ -7,7 +7,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <chrono>
 
 #include "tailor/bvh/feature_boxes.hpp"
 #include "tailor/ccd/ccd.hpp"
@@ -15,8 +14,6 @@
 
 namespace tailor {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 Vec3 row(const Positions& x, Index i) {
   return x.row(i).transpose();
@@ -87,7 +84,6 @@ std::vector<Index> ObstacleCollisionDetector::cloth_vertices(const ObstacleColli
 
 std::vector<ObstacleCollision> ObstacleCollisionDetector::detect(const Positions& x0,
                                                                  const Positions& x1) {
-  const auto start = Clock::now();
   if (m_obstacle == nullptr) throw InputError("obstacle detector: no obstacle set");
   if (x0.rows() != m_cloth.num_vertices() || x1.rows() != m_cloth.num_vertices()) {
     throw InputError("obstacle detector: cloth positions do not match the cloth mesh");
@@ -142,7 +138,6 @@ std::vector<ObstacleCollision> ObstacleCollisionDetector::detect(const Positions
     if (hit[i]) out.push_back(candidates[i]);
   }
   std::sort(out.begin(), out.end());
-  m_total_ms += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   return out;
 }
 

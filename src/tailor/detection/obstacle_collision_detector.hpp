@@ -57,8 +57,6 @@ class ObstacleCollisionDetector {
 
   /// Cloth vertices of a collision's cloth primitive.
   std::vector<Index> cloth_vertices(const ObstacleCollision& c) const;
-  /// Milliseconds spent in detect() since construction.
-  double total_ms() const { return m_total_ms; }
 
  private:
   const TriangleMesh& m_cloth;
@@ -68,7 +66,6 @@ class ObstacleCollisionDetector {
   const Positions* m_y1 = nullptr;
   Bvh m_cloth_vertices, m_cloth_edges, m_cloth_faces;
   Bvh m_obstacle_vertices, m_obstacle_edges, m_obstacle_faces;
-  double m_total_ms = 0;
 };
 
 }  // namespace tailor
