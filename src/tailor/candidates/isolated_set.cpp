@@ -12,14 +12,11 @@ bool face_has_vertex(const TriangleMesh& mesh, Index f, Index v) {
   return face[0] == v || face[1] == v || face[2] == v;
 }
 
-// Faces sharing a vertex with some face around the vertices in `seeds`, sorted, unique.
-void faces_near(const TriangleMesh& mesh, std::span<const Index> seed_faces,
-                std::vector<Index>& out) {
+// Faces sharing a vertex with face `f` (`f` included), sorted, unique.
+void faces_near(const TriangleMesh& mesh, Index f, std::vector<Index>& out) {
   out.clear();
-  for (Index f : seed_faces) {
-    for (int k = 0; k < 3; ++k) {
-      for (Index g : mesh.vertex_faces(mesh.faces()(f, k))) out.push_back(g);
-    }
+  for (int k = 0; k < 3; ++k) {
+    for (Index g : mesh.vertex_faces(mesh.faces()(f, k))) out.push_back(g);
   }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
@@ -64,14 +61,13 @@ std::pair<Index, Index> first_disjoint_face_pair(const TriangleMesh& mesh, Index
 IsolatedSet IsolatedSet::build(const TriangleMesh& mesh) {
   IsolatedSet set;
   // An orphan face g shares a vertex with every face around v, in particular with the
-  // first: the faces near that one are all the candidates (near all of them, as before,
-  // the same set came out of six times the work on a regular mesh).
+  // first, so the faces near that one are all the candidates.
   set.vertex_face = collect_in_order<VertexFacePair>(
       mesh.num_vertices(),
       [&](Index v, std::vector<VertexFacePair>& out, std::vector<Index>& near) {
         const auto around = mesh.vertex_faces(v);
         if (around.empty()) return;  // unreferenced vertices are not part of the surface
-        faces_near(mesh, around.first(1), near);
+        faces_near(mesh, around[0], near);
         for (Index g : near) {
           if (!face_has_vertex(mesh, g, v) && first_face_disjoint_from(mesh, v, g) < 0) {
             out.push_back({v, g});
@@ -82,7 +78,7 @@ IsolatedSet IsolatedSet::build(const TriangleMesh& mesh) {
       mesh.num_edges(), [&](Index e1, std::vector<EdgeEdgePair>& out, std::vector<Index>& near) {
         // Every face of an orphan partner e2 shares a vertex with the first face of e1, so
         // e2 is an edge of a face near that one.
-        faces_near(mesh, mesh.edge_faces(e1).first(1), near);
+        faces_near(mesh, mesh.edge_faces(e1)[0], near);
         std::vector<Index> candidates;
         for (Index g : near) {
           for (Index e2 : mesh.face_edges(g)) {
