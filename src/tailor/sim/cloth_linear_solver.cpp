@@ -34,14 +34,11 @@ void ClothLinearSolver::set_method(ClothSolver method, double cg_tolerance) {
 
 bool ClothLinearSolver::factorize_and_solve(const SparseMatrix& A, const Eigen::VectorXd& b,
                                             Eigen::VectorXd& x) {
-  if (!m_analyzed) {
-    m_cholesky.analyzePattern(A);
-    m_analyzed = true;
-  }
-  m_cholesky.factorize(A);
-  // LDLᵀ also factorises indefinite matrices: positive pivots certify A is SPD.
-  const bool spd = m_cholesky.info() == Eigen::Success && m_cholesky.vectorD().minCoeff() > 0;
-  if (spd) x = m_cholesky.solve(b);
+  if (!m_cholesky.analyzed()) m_cholesky.analyze(A);
+  // LLᵀ stops at the first diagonal block that is not positive definite: success
+  // certifies A is SPD.
+  const bool spd = m_cholesky.factorize(A);
+  if (spd) m_cholesky.solve(b, x);
   return spd;
 }
 

@@ -6,9 +6,9 @@
 #include <memory>
 
 #include <Eigen/IterativeLinearSolvers>
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
+#include "tailor/sim/block_cholesky.hpp"
 #include "tailor/sim/block_jacobi.hpp"
 
 namespace tailor {
@@ -19,7 +19,8 @@ enum class ClothSolver {
                ///< to ClothLinearSolver::kDirectSolveLimit, else iterative; a
                ///< supernodal factorisation is reused for later systems while it
                ///< preconditions conjugate gradient well (ClothLinearSolver)
-  direct,      ///< sparse simplicial LDLᵀ Cholesky, Eigen, factorised every step (exact)
+  direct,      ///< sparse Cholesky on 3 × 3 blocks (BlockCholesky), factorised every step
+               ///< (exact)
   supernodal,  ///< supernodal LLᵀ Cholesky, CHOLMOD, factorised every step (exact)
   iterative,   ///< conjugate gradient, block-Jacobi preconditioner, warm-started
 };
@@ -56,9 +57,11 @@ class ClothLinearSolver {
   /// block-Jacobi CG.
   static constexpr Eigen::Index kDirectSolveLimit = 60000;
   /// From this many unknowns on, `automatic` factorises with CHOLMOD's supernodal LLᵀ
-  /// instead of Eigen's simplicial LDLᵀ. Measured on the sleeve's own systems (OpenBLAS
-  /// with one or two threads, factorisation + solve, best of 5-50): 2,079 unknowns (default sleeve)
-  /// Eigen 1.9 ms, CHOLMOD 4.3-5.4; 20,592 (10× sleeve) Eigen 121 ms, CHOLMOD 57-82.
+  /// (whose factorisation it can reuse, below) instead of BlockCholesky. Measured on the
+  /// sleeve's own systems (factorisation + solve, best of 5-30, 2026-11-26, a 2.45 GHz
+  /// Zen 3): 2,079 unknowns (default sleeve) BlockCholesky 1.67 ms, Eigen's simplicial
+  /// LDLᵀ 3.55, CHOLMOD 5.7-6.0; 20,592 (10× sleeve) BlockCholesky 71-72 ms, Eigen 153-156,
+  /// CHOLMOD 62-91.
   static constexpr Eigen::Index kSupernodalFrom = 8000;
   /// Relative residual at which CG with a reused factorisation stops.
   static constexpr double kReuseTolerance = 1e-6;
@@ -92,11 +95,10 @@ class ClothLinearSolver {
 
   ClothSolver m_method = ClothSolver::automatic;
   double m_cg_tolerance = 1e-6;
-  // Simplicial sparse LDLᵀ (Eigen, AMD ordering): below kSupernodalFrom it beats
-  // CHOLMOD's supernodal and simplicial factorisations (their setup per call outweighs the
-  // dense kernels on small fronts); LDLᵀ (no square roots) is about 10 % below LLᵀ.
-  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> m_cholesky;
-  bool m_analyzed = false;
+  // Below kSupernodalFrom the block factorisation beats CHOLMOD's supernodal and
+  // simplicial ones (their setup per call outweighs the dense kernels on small fronts)
+  // and Eigen's scalar simplicial LDLᵀ.
+  BlockCholesky m_cholesky;
   Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, BlockJacobi> m_jacobi_cg;
   // CHOLMOD's state behind a pointer: cholmod.h stays out of the public headers.
   struct Supernodal;
