@@ -3,6 +3,9 @@
 
 #include "tailor/sim/arm_collision.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -13,6 +16,11 @@ namespace {
 /// projected lands on the margin only up to rounding, and projecting it again every time
 /// would keep the strain limiter's alternating projections from ever finishing.
 constexpr double kMarginRounding = 1e-9;
+
+/// Vertices per parallel task of the projection: the strain limiter projects after every
+/// sweep, so a task must outweigh its scheduling (the default sleeve, 693 vertices, stays
+/// one task; the 10× sleeve, 6,864, makes seven).
+constexpr Eigen::Index kProjectionGrain = 1024;
 
 std::array<Eigen::Isometry3d, 2> bone_motion(const ArmSkeleton& s0, const ArmSkeleton& s1) {
   return {s1.upper_arm * s0.upper_arm.inverse(), s1.forearm * s0.forearm.inverse()};
@@ -90,19 +98,17 @@ ArmCollisionStats project_out_of_arm(const Arm& arm, const ArmSkeleton& skeleton
                                      Positions& x1, double margin, double friction,
                                      const std::vector<char>& fixed,
                                      std::vector<Index>* projected_ids, ArmClearanceCache* cache) {
-  ArmCollisionStats stats;
-  if (projected_ids != nullptr) projected_ids->clear();
-  const std::array<Eigen::Isometry3d, 2> motion = {
-      skeleton1.upper_arm * skeleton0.upper_arm.inverse(),
-      skeleton1.forearm * skeleton0.forearm.inverse()};
-  for (Eigen::Index i = 0; i < x1.rows(); ++i) {
-    if (!fixed.empty() && fixed[static_cast<std::size_t>(i)] != 0) continue;
+  const auto motion = bone_motion(skeleton0, skeleton1);
+  // Moves vertex i out of the arm; true when it moved. Touches row i of x1 and entry i of
+  // the cache only, so vertices are independent.
+  const auto project = [&](Eigen::Index i, double& max_depth) {
+    if (!fixed.empty() && fixed[static_cast<std::size_t>(i)] != 0) return false;
     Vec3 p = x1.row(i).transpose();
-    if (cache != nullptr && cache->surely_clear(static_cast<Index>(i), p)) continue;
+    if (cache != nullptr && cache->surely_clear(static_cast<Index>(i), p)) return false;
     const double clearance = arm.signed_distance(skeleton1, p) - margin;  // cheap test first
     if (clearance >= 0) {
       if (cache != nullptr) cache->store(static_cast<Index>(i), p, clearance);
-      continue;
+      return false;
     }
     bool moved = false;
     // A few passes: in the elbow crease, leaving one cone can enter the other.
@@ -110,7 +116,7 @@ ArmCollisionStats project_out_of_arm(const Arm& arm, const ArmSkeleton& skeleton
       const ArmDistance d = arm.distance(skeleton1, p);
       if (d.distance >= margin * (1 - kMarginRounding)) break;
       const double depth = margin - d.distance;
-      stats.max_depth = std::max(stats.max_depth, depth);
+      max_depth = std::max(max_depth, depth);
       p += depth * d.normal;
       if (pass == 0 && friction > 0) {
         // Tangential slip relative to the moving arm, reduced by at most μ·depth.
@@ -124,9 +130,33 @@ ArmCollisionStats project_out_of_arm(const Arm& arm, const ArmSkeleton& skeleton
     }
     if (moved) {
       if (cache != nullptr) cache->store(static_cast<Index>(i), p, 0.0);
-      ++stats.projected;
-      if (projected_ids != nullptr) projected_ids->push_back(static_cast<Index>(i));
       x1.row(i) = p.transpose();
+    }
+    return moved;
+  };
+
+  // Blocks of vertices in parallel; the counts and the deepest penetration are reduced
+  // exactly (integer sum, maximum), so the result does not depend on the thread count.
+  std::vector<char> moved(projected_ids != nullptr ? static_cast<std::size_t>(x1.rows()) : 0, 0);
+  const ArmCollisionStats stats = tbb::parallel_reduce(
+      tbb::blocked_range<Eigen::Index>(0, x1.rows(), kProjectionGrain), ArmCollisionStats{},
+      [&](const tbb::blocked_range<Eigen::Index>& range, ArmCollisionStats s) {
+        for (Eigen::Index i = range.begin(); i != range.end(); ++i) {
+          if (!project(i, s.max_depth)) continue;
+          ++s.projected;
+          if (!moved.empty()) moved[static_cast<std::size_t>(i)] = 1;
+        }
+        return s;
+      },
+      [](ArmCollisionStats a, const ArmCollisionStats& b) {
+        a.projected += b.projected;
+        a.max_depth = std::max(a.max_depth, b.max_depth);
+        return a;
+      });
+  if (projected_ids != nullptr) {
+    projected_ids->clear();
+    for (std::size_t i = 0; i < moved.size(); ++i) {
+      if (moved[i] != 0) projected_ids->push_back(static_cast<Index>(i));
     }
   }
   return stats;
