@@ -13,8 +13,8 @@ packages=(
   libeigen3-dev libtbb-dev libfmt-dev libspdlog-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev
   libpng-dev
-  # CHOLMOD for large cloth systems; OpenBLAS becomes the libblas.so.3 it calls (the
-  # reference BLAS makes its supernodal factorisation slower than Eigen's simplicial one)
+  # CHOLMOD orders the cloth systems (AMD / METIS) and factorises them on request
+  # (ClothSolver::supernodal); OpenBLAS becomes the libblas.so.3 it calls there
   libsuitesparse-dev libopenblas0
   chromium  # the headless browser of tailor view's browser test (tests/view)
   pybind11-dev python3-dev python3-numpy python3-pytest

@@ -5,6 +5,7 @@
 /// cannot factorise.
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
@@ -96,6 +97,41 @@ TEST(BlockCholesky, SolvesLikeADenseCholesky) {
       expect_dense_solution(cholesky, A, "random pattern");
     }
   }
+}
+
+TEST(BlockCholesky, TwoThreadsGiveTheOneThreadFactorBitForBit) {
+  // A grid large enough for nested dissection to leave two subtrees worth a thread each.
+  std::mt19937 rng(8);
+  const SparseMatrix A = grid_system(48, rng, 1.0);  // 6,912 unknowns
+  BlockCholesky cholesky;
+  cholesky.analyze(A);
+  EXPECT_GT(cholesky.parallel_rows()[0], 0u);
+  EXPECT_GT(cholesky.parallel_rows()[1], 0u);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(A.rows(), 2, -1);
+  Eigen::VectorXd two, one;
+  ASSERT_TRUE(cholesky.factorize(A));
+  cholesky.solve(b, two);
+  EXPECT_LT((A * two - b).norm(), 1e-12 * b.norm());
+  {
+    const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+    ASSERT_TRUE(cholesky.factorize(A));
+    cholesky.solve(b, one);
+  }
+  EXPECT_EQ(one, two);
+}
+
+TEST(BlockCholesky, TakesAGivenOrder) {
+  std::mt19937 rng(2);
+  const SparseMatrix A = grid_system(6, rng, 1.0);
+  std::vector<int> natural(36);
+  for (int i = 0; i < 36; ++i) natural[static_cast<std::size_t>(i)] = i;
+  BlockCholesky cholesky;
+  cholesky.analyze(A, natural);
+  expect_dense_solution(cholesky, A, "natural order");
+  std::vector<int> twice = natural;
+  twice[5] = 4;  // not a permutation
+  EXPECT_THROW(cholesky.analyze(A, twice), std::invalid_argument);
+  EXPECT_THROW(cholesky.analyze(A, std::vector<int>(35, 0)), std::invalid_argument);
 }
 
 TEST(BlockCholesky, RefusesIndefiniteMatricesAndStaysUsable) {

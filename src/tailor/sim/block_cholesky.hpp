@@ -1,15 +1,18 @@
 #pragma once
 /// @file
 /// Sparse Cholesky factorisation LLᵀ of a symmetric positive definite matrix made of 3 × 3
-/// blocks (one per vertex pair), factorised block by block.
+/// blocks (one per vertex pair), factorised block by block, on two threads.
 ///
 /// The cloth's implicit step solves such a system every step. A scalar sparse Cholesky
 /// (Eigen's SimplicialLDLT) spends most of its time on indices: each multiply-add of the
-/// factorisation goes through an index lookup. Here the ordering (AMD on the vertex graph),
-/// the elimination tree and the pattern of L are computed per vertex, once per pattern, and
-/// each update is a dense 3 × 3 product (27 multiply-adds per index lookup). On the default
-/// sleeve's system (2,079 unknowns, 7,914 blocks in L) it factorises and solves in
-/// 0.9-1.2 ms where SimplicialLDLT takes 2.5 ms (docs/simulation.md).
+/// factorisation goes through an index lookup. Here the ordering (CHOLMOD's choice of AMD
+/// or METIS nested dissection on the vertex graph), the elimination tree and the pattern
+/// of L are computed per vertex, once per pattern, and each update is a dense 3 × 3
+/// product (27 multiply-adds per index lookup). A row of L depends only on the rows of its
+/// subtree in the elimination tree, so two disjoint parts of the tree are factorised on
+/// two threads, then the path above them (docs/simulation.md gives the times).
+
+#include <array>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -24,20 +27,32 @@ class BlockCholesky {
   using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
   /// Symbolic analysis of `A`'s pattern: A is square with 3k rows, both triangles stored,
-  /// with a symmetric pattern. Throws std::invalid_argument otherwise.
-  void analyze(const SparseMatrix& A);
+  /// with a symmetric pattern. Throws std::invalid_argument otherwise. `order` (optional)
+  /// is the elimination order of the k vertices (`order[new] = old`); by default AMD's.
+  void analyze(const SparseMatrix& A, const std::vector<int>& order = {});
   /// True once analyze() has run.
   bool analyzed() const { return m_blocks > 0; }
   /// Numeric factorisation of `A` (the analysed pattern, symmetric values). False when A
   /// is not positive definite (a diagonal block's Cholesky fails), or not finite.
   bool factorize(const SparseMatrix& A);
   /// Solves A x = b with the last successful factorisation.
-  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
   /// Blocks stored in L below the diagonal (a measure of fill).
   std::size_t off_diagonal_blocks() const { return m_l_rows.size(); }
+  /// Rows of L factorised on each of the two threads (0 and 0: one thread).
+  std::array<std::size_t, 2> parallel_rows() const { return {m_rows[0].size(), m_rows[1].size()}; }
+
+  /// The factorisation runs on two threads only when the estimated time (block updates of
+  /// the longer part plus the path above) is below this fraction of one thread's.
+  static constexpr double kSplitWorthIt = 0.8;
 
  private:
   using Block = Eigen::Matrix3d;
+
+  // Chooses m_rows from the elimination tree and each row's cost (block updates).
+  void split_for_two_threads(const std::vector<int>& parent, const std::vector<double>& cost);
+  // Factorises the given rows in increasing order; false when a diagonal block is not SPD.
+  bool factorize_rows(const std::vector<int>& rows);
 
   int m_blocks = 0;            // block rows
   std::vector<int> m_order;    // m_order[new] = old block index
@@ -55,8 +70,10 @@ class BlockCholesky {
   std::vector<int> m_l_start, m_l_rows;
   std::vector<Block> m_l_values;
   std::vector<Block> m_diagonal;
-  mutable std::vector<Eigen::Vector3d> m_work_vector;
+  std::vector<Eigen::Vector3d> m_work_vector;
   std::vector<Block> m_work;  // one block per row: the column being solved, zero between uses
+  // Rows in increasing order: two parts that run at the same time, then the rest.
+  std::array<std::vector<int>, 3> m_rows;
 };
 
 }  // namespace tailor

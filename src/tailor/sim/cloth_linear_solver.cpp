@@ -56,7 +56,9 @@ bool ClothLinearSolver::supernodal_solve(const SparseMatrix& A, const Eigen::Vec
 bool ClothLinearSolver::reuse_solve(const SparseMatrix& A, const Eigen::VectorXd& b,
                                     Eigen::VectorXd& x, int& iterations) {
   const auto precondition = [&](const Eigen::VectorXd& r) -> Eigen::VectorXd {
-    return m_supernodal->cholesky.solve(r);
+    Eigen::VectorXd z;
+    m_cholesky.solve(r, z);
+    return z;
   };
   iterations = 0;
   const double target = kReuseTolerance * b.norm();
@@ -87,11 +89,10 @@ LinearSolveInfo ClothLinearSolver::solve(const SparseMatrix& A, const Eigen::Vec
   LinearSolveInfo info;
   ClothSolver method = m_method;
   if (method == ClothSolver::automatic) {
-    method = A.rows() > kDirectSolveLimit  ? ClothSolver::iterative
-             : A.rows() >= kSupernodalFrom ? ClothSolver::supernodal
-                                           : ClothSolver::direct;
+    method = A.rows() > kDirectSolveLimit ? ClothSolver::iterative : ClothSolver::direct;
   }
-  const bool reuse = m_method == ClothSolver::automatic && method == ClothSolver::supernodal;
+  const bool reuse = m_method == ClothSolver::automatic && method == ClothSolver::direct &&
+                     A.rows() >= kReuseFrom;
   if (reuse && m_skip_reuse > 0) {
     --m_skip_reuse;
   } else if (reuse && m_kept && m_reuses < kMaxReuses &&
@@ -102,7 +103,6 @@ LinearSolveInfo ClothLinearSolver::solve(const SparseMatrix& A, const Eigen::Vec
       m_last_iterations = info.iterations;
       m_misses = 0;
       info.reused = true;
-      info.supernodal = true;
       info.ok = true;
       return info;
     }

@@ -15,10 +15,10 @@ namespace tailor {
 
 /// Linear solver of the implicit step.
 enum class ClothSolver {
-  automatic,   ///< direct below ClothLinearSolver::kSupernodalFrom unknowns, supernodal up
-               ///< to ClothLinearSolver::kDirectSolveLimit, else iterative; a
-               ///< supernodal factorisation is reused for later systems while it
-               ///< preconditions conjugate gradient well (ClothLinearSolver)
+  automatic,   ///< direct up to ClothLinearSolver::kDirectSolveLimit unknowns, else
+               ///< iterative; from ClothLinearSolver::kReuseFrom unknowns on, a
+               ///< factorisation is reused for later systems while it preconditions
+               ///< conjugate gradient well (ClothLinearSolver)
   direct,      ///< sparse Cholesky on 3 × 3 blocks (BlockCholesky), factorised every step
                ///< (exact)
   supernodal,  ///< supernodal LLᵀ Cholesky, CHOLMOD, factorised every step (exact)
@@ -28,7 +28,7 @@ enum class ClothSolver {
 /// What one solve did.
 struct LinearSolveInfo {
   bool factorized = false;  ///< solved by Cholesky factorisation (false: CG)
-  bool supernodal = false;  ///< the factorisation (made or reused) was CHOLMOD's supernodal one
+  bool supernodal = false;  ///< the factorisation was CHOLMOD's supernodal one
   bool reused = false;      ///< CG preconditioned by an earlier system's factorisation
   int iterations = 0;       ///< CG iterations (0 for the factorisation)
   bool ok = false;          ///< false if the solve failed (not SPD, not finite)
@@ -37,7 +37,7 @@ struct LinearSolveInfo {
 /// Solves A x = b for the successive systems of a cloth model (same pattern every time):
 /// the symbolic analysis of the factorisation is done once.
 ///
-/// `automatic` reuses a supernodal factorisation (large systems): the next systems are
+/// `automatic` reuses a factorisation of a large system: the next systems are
 /// solved by conjugate gradient preconditioned with it, to a relative residual of
 /// kReuseTolerance, until CG needs more than kReuseIterations or kMaxReuses systems used
 /// it; then it factorises again. The successive systems of a cloth differ by the
@@ -56,13 +56,12 @@ class ClothLinearSolver {
   /// Systems with at most this many unknowns use a factorisation, larger ones
   /// block-Jacobi CG.
   static constexpr Eigen::Index kDirectSolveLimit = 60000;
-  /// From this many unknowns on, `automatic` factorises with CHOLMOD's supernodal LLᵀ
-  /// (whose factorisation it can reuse, below) instead of BlockCholesky. Measured on the
-  /// sleeve's own systems (factorisation + solve, best of 5-30, 2026-11-26, a 2.45 GHz
-  /// Zen 3): 2,079 unknowns (default sleeve) BlockCholesky 1.67 ms, Eigen's simplicial
-  /// LDLᵀ 3.55, CHOLMOD 5.7-6.0; 20,592 (10× sleeve) BlockCholesky 71-72 ms, Eigen 153-156,
-  /// CHOLMOD 62-91.
-  static constexpr Eigen::Index kSupernodalFrom = 8000;
+  /// From this many unknowns on, `automatic` tries to reuse its last factorisation.
+  /// BlockCholesky is also faster than CHOLMOD's supernodal LLᵀ on the sleeve's own
+  /// systems (factorisation + solve, best of 5-30, 2026-11-26, a 2.45 GHz Zen 3): 2,079
+  /// unknowns (default sleeve) 1.2-1.3 ms against 3.5-4.3 (Eigen's simplicial LDLᵀ 2.5);
+  /// 20,592 (10× sleeve) 36-45 ms on two threads against 68-86 (Eigen 153-156).
+  static constexpr Eigen::Index kReuseFrom = 8000;
   /// Relative residual at which CG with a reused factorisation stops.
   static constexpr double kReuseTolerance = 1e-6;
   /// CG iterations allowed with a reused factorisation; a system that needs more is
@@ -86,7 +85,7 @@ class ClothLinearSolver {
  private:
   // Factorises A (the symbolic analysis once) and solves; false when A is not SPD.
   bool factorize_and_solve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x);
-  // The same with CHOLMOD's supernodal LLᵀ.
+  // The same with CHOLMOD's supernodal LLᵀ (only on request: ClothSolver::supernodal).
   bool supernodal_solve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x);
   // CG preconditioned by the kept factorisation (warm start x); false when it does not
   // reach kReuseTolerance within kReuseIterations.
@@ -95,15 +94,12 @@ class ClothLinearSolver {
 
   ClothSolver m_method = ClothSolver::automatic;
   double m_cg_tolerance = 1e-6;
-  // Below kSupernodalFrom the block factorisation beats CHOLMOD's supernodal and
-  // simplicial ones (their setup per call outweighs the dense kernels on small fronts)
-  // and Eigen's scalar simplicial LDLᵀ.
   BlockCholesky m_cholesky;
   Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, BlockJacobi> m_jacobi_cg;
   // CHOLMOD's state behind a pointer: cholmod.h stays out of the public headers.
   struct Supernodal;
   std::unique_ptr<Supernodal> m_supernodal;
-  // The reusable supernodal factorisation of `automatic`: valid, how many systems it
+  // The reusable factorisation (m_cholesky) of `automatic`: valid, how many systems it
   // solved since, and the CG iterations of the last of them.
   bool m_kept = false;
   int m_reuses = 0;
