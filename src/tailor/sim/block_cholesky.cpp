@@ -50,6 +50,20 @@ std::vector<int> fill_reducing_order(const Eigen::SparseMatrix<double, Eigen::Co
   return order;
 }
 
+/// The inverse of the lower triangle of `L` (the upper part of `L` is ignored): 3 × 3
+/// products with it replace triangular solves, which Eigen runs through its general
+/// (dynamic-size) kernel for a matrix right-hand side.
+Eigen::Matrix3d lower_triangular_inverse(const Eigen::Matrix3d& L) {
+  Eigen::Matrix3d inverse = Eigen::Matrix3d::Zero();
+  inverse(0, 0) = 1 / L(0, 0);
+  inverse(1, 1) = 1 / L(1, 1);
+  inverse(2, 2) = 1 / L(2, 2);
+  inverse(1, 0) = -L(1, 0) * inverse(0, 0) * inverse(1, 1);
+  inverse(2, 1) = -L(2, 1) * inverse(1, 1) * inverse(2, 2);
+  inverse(2, 0) = -(L(2, 0) * inverse(0, 0) + L(2, 1) * inverse(1, 0)) * inverse(2, 2);
+  return inverse;
+}
+
 }  // namespace
 
 void BlockCholesky::analyze(const SparseMatrix& A, const std::vector<int>& order) {
@@ -162,7 +176,7 @@ void BlockCholesky::analyze(const SparseMatrix& A, const std::vector<int>& order
   split_for_two_threads(parent, cost);
 
   m_l_values.assign(m_l_rows.size(), Block::Zero());
-  m_diagonal.assign(at(n), Block::Zero());
+  m_diagonal_inverse.assign(at(n), Block::Zero());
   m_work.assign(at(n), Block::Zero());
   m_work_vector.assign(at(n), Eigen::Vector3d::Zero());
   m_scalar_nonzeros = S.nonZeros();
@@ -232,7 +246,7 @@ bool BlockCholesky::factorize_rows(const std::vector<int>& rows) {
     for (int r = m_row_start[at(k)]; r < m_row_start[at(k) + 1]; ++r) {
       const auto i = at(m_row_columns[at(r)]);
       // y = L_ii⁻¹ (A_ik − Σ_{j<i} L_ij y_j): the sum already subtracted into m_work[i].
-      const Block y = m_diagonal[i].triangularView<Eigen::Lower>().solve(m_work[i]);
+      const Block y = m_diagonal_inverse[i] * m_work[i];
       m_work[i].setZero();
       // Column i of L holds rows below i; those already made (< k) take y's update.
       int q = m_l_start[i];
@@ -246,7 +260,7 @@ bool BlockCholesky::factorize_rows(const std::vector<int>& rows) {
     // refusal leaves nothing behind for the next factorisation.
     const Eigen::LLT<Block> llt(diagonal);
     if (llt.info() != Eigen::Success || !llt.matrixLLT().allFinite()) return false;
-    m_diagonal[at(k)] = llt.matrixL();
+    m_diagonal_inverse[at(k)] = lower_triangular_inverse(llt.matrixLLT());
   }
   return true;
 }
@@ -276,7 +290,7 @@ void BlockCholesky::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   // L y = P b, column by column.
   for (int i = 0; i < m_blocks; ++i) {
     const auto c = at(i);
-    y[c] = m_diagonal[c].triangularView<Eigen::Lower>().solve(y[c]);
+    y[c] = m_diagonal_inverse[c] * y[c];
     for (int q = m_l_start[c]; q < m_l_start[c + 1]; ++q) {
       y[at(m_l_rows[at(q)])].noalias() -= m_l_values[at(q)] * y[c];
     }
@@ -288,7 +302,7 @@ void BlockCholesky::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
     for (int q = m_l_start[c]; q < m_l_start[c + 1]; ++q) {
       s.noalias() -= m_l_values[at(q)].transpose() * y[at(m_l_rows[at(q)])];
     }
-    y[c] = m_diagonal[c].transpose().triangularView<Eigen::Upper>().solve(s);
+    y[c] = m_diagonal_inverse[c].transpose() * s;
   }
   x.resize(3 * m_blocks);
   for (int k = 0; k < m_blocks; ++k) x.segment<3>(3 * m_order[at(k)]) = y[at(k)];

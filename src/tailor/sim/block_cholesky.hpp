@@ -66,10 +66,10 @@ class BlockCholesky {
   // The pattern of each row of L (strictly left of the diagonal), in increasing order.
   std::vector<int> m_row_start, m_row_columns;
   // L column by column, strictly below the diagonal: rows (increasing) and blocks; the
-  // diagonal blocks (lower triangular) apart.
+  // inverses of the diagonal blocks (lower triangular) apart.
   std::vector<int> m_l_start, m_l_rows;
   std::vector<Block> m_l_values;
-  std::vector<Block> m_diagonal;
+  std::vector<Block> m_diagonal_inverse;
   std::vector<Eigen::Vector3d> m_work_vector;
   std::vector<Block> m_work;  // one block per row: the column being solved, zero between uses
   // Rows in increasing order: two parts that run at the same time, then the rest.
