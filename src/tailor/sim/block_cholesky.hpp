@@ -12,10 +12,10 @@
 /// subtree in the elimination tree, so two disjoint parts of the tree are factorised on
 /// two threads, then the path above them (docs/simulation.md gives the times).
 
-#include <array>
-
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <array>
+#include <cstdint>
 #include <vector>
 
 namespace tailor {
@@ -28,7 +28,8 @@ class BlockCholesky {
 
   /// Symbolic analysis of `A`'s pattern: A is square with 3k rows, both triangles stored,
   /// with a symmetric pattern. Throws std::invalid_argument otherwise. `order` (optional)
-  /// is the elimination order of the k vertices (`order[new] = old`); by default AMD's.
+  /// is the elimination order of the k vertices (`order[new] = old`); by default
+  /// CHOLMOD's choice of AMD or METIS, postordered.
   void analyze(const SparseMatrix& A, const std::vector<int>& order = {});
   /// True once analyze() has run.
   bool analyzed() const { return m_blocks > 0; }

@@ -41,10 +41,10 @@ struct LinearSolveInfo {
 /// solved by conjugate gradient preconditioned with it, to a relative residual of
 /// kReuseTolerance, until CG needs more than kReuseIterations or kMaxReuses systems used
 /// it; then it factorises again. The successive systems of a cloth differ by the
-/// stiffness at new positions and by the arm's contact and friction blocks; on the 10×
-/// sleeve (20,592 unknowns) a factorisation costs as much as ~20 iterations and stays a
-/// good preconditioner for a few substeps (3-4 iterations) except where contacts with
-/// the arm change (docs/simulation.md). Small systems are factorised every time: on the
+/// stiffness at new positions and by the arm's contact and friction blocks; with
+/// CHOLMOD's factorisation the reuse made the 10× sleeve (20,592 unknowns) faster, with
+/// BlockCholesky's, which is 2-3 times cheaper, it gains nothing measurable there
+/// (docs/simulation.md) but is kept for larger systems. Small systems are factorised every time: on the
 /// default sleeve (2,079 unknowns) a factorisation costs about 9 iterations, and there the
 /// arm's contacts change enough between substeps that 203 of 240 reuses in the elbow
 /// gesture missed 10 iterations at any tolerance from 1e-5 to 1e-8 (an earlier attempt,
@@ -59,8 +59,8 @@ class ClothLinearSolver {
   /// From this many unknowns on, `automatic` tries to reuse its last factorisation.
   /// BlockCholesky is also faster than CHOLMOD's supernodal LLᵀ on the sleeve's own
   /// systems (factorisation + solve, best of 5-30, 2026-11-26, a 2.45 GHz Zen 3): 2,079
-  /// unknowns (default sleeve) 1.2-1.3 ms against 3.5-4.3 (Eigen's simplicial LDLᵀ 2.5);
-  /// 20,592 (10× sleeve) 36-45 ms on two threads against 68-86 (Eigen 153-156).
+  /// unknowns (default sleeve) 0.97-1.0 ms against 3.5-4.3 (Eigen's simplicial LDLᵀ 2.45);
+  /// 20,592 (10× sleeve) 26-28 ms on two threads against 62-91 (Eigen 153-156).
   static constexpr Eigen::Index kReuseFrom = 8000;
   /// Relative residual at which CG with a reused factorisation stops.
   static constexpr double kReuseTolerance = 1e-6;
