@@ -145,6 +145,11 @@ TEST(BlockCholesky, RefusesIndefiniteMatricesAndStaysUsable) {
   // The failed factorisation leaves no state behind that spoils the next one.
   expect_dense_solution(cholesky, spd, "after a refusal");
 
+  SparseMatrix empty(6, 6);  // no stored entry
+  BlockCholesky nothing;
+  nothing.analyze(empty);
+  EXPECT_FALSE(nothing.factorize(empty));
+
   SparseMatrix not_finite = spd;
   not_finite.valuePtr()[0] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_FALSE(cholesky.factorize(not_finite));

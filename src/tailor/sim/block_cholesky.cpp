@@ -270,6 +270,8 @@ bool BlockCholesky::factorize(const SparseMatrix& A) {
       !A.isCompressed()) {
     throw std::invalid_argument("block Cholesky: factorize() needs the analysed pattern");
   }
+  // No stored entry at all: not positive definite.
+  if (m_a_values.empty()) return false;
   const double* values = A.valuePtr();
   for (Block& b : m_a_values) b.setZero();
   double* a_values = m_a_values.front().data();
