@@ -105,8 +105,37 @@ struct ClothModel::Impl {
     return static_cast<int>(it - begin);
   }
 
-  void add_block(double* values, Index I, Index J, const Mat3& block) const {
-    const int k = block_offset(I, J);
+  // block_offset() of every block a face and a hinge add to, looked up once (the
+  // searches were about a third of the assembly): entry 3 i + j for face vertices i, j;
+  // 4 i + j for hinge vertices (the opposite pair's entries unused).
+  std::vector<std::array<int, 9>> face_block_offsets;
+  std::vector<std::array<int, 16>> hinge_block_offsets;
+
+  void find_block_offsets() {
+    face_block_offsets.resize(static_cast<std::size_t>(faces.rows()));
+    for (Index t = 0; t < static_cast<Index>(faces.rows()); ++t) {
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+          face_block_offsets[static_cast<std::size_t>(t)][static_cast<std::size_t>(3 * i + j)] =
+              block_offset(faces(t, i), faces(t, j));
+        }
+      }
+    }
+    hinge_block_offsets.assign(hinges.size(), {});
+    for (std::size_t h = 0; h < hinges.size(); ++h) {
+      for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 4; ++j) {
+          const bool opposite = (i == 2 && j == 3) || (i == 3 && j == 2);
+          hinge_block_offsets[h][static_cast<std::size_t>(4 * i + j)] =
+              opposite ? -1 : block_offset(hinges[h].v[static_cast<std::size_t>(i)],
+                                           hinges[h].v[static_cast<std::size_t>(j)]);
+        }
+      }
+    }
+  }
+
+  /// Adds `block` at block row I (offset `k` = block_offset(I, J)) of block column J.
+  void add_block(double* values, int k, Index J, const Mat3& block) const {
     const int* outer = pattern.outerIndexPtr();
     for (int b = 0; b < 3; ++b) {
       double* col = values + outer[3 * J + b] + k;
@@ -152,7 +181,8 @@ struct ClothModel::Impl {
           for (int j = 0; j < 3; ++j) {
             const Mat3 block = r.area * (ks * (r.cu[i] * r.cu[j] * pu + r.cv[i] * r.cv[j] * pv) +
                                          ksh * g[i] * g[j].transpose());
-            add_block(k_values, vid[i], vid[j], block);
+            add_block(k_values, face_block_offsets[static_cast<std::size_t>(t)][3 * i + j],
+                      vid[j], block);
           }
         }
       }
@@ -160,7 +190,8 @@ struct ClothModel::Impl {
     const double kb = material.bending_stiffness;
     if (kb > 0) {
       Eigen::Matrix<double, 12, 1> grad;
-      for (const Hinge& h : hinges) {
+      for (std::size_t hi = 0; hi < hinges.size(); ++hi) {
+        const Hinge& h = hinges[hi];
         const double angle = dihedral_angle(row3(x, h.v[0]), row3(x, h.v[1]), row3(x, h.v[2]),
                                             row3(x, h.v[3]), &grad);
         const double d = wrap_angle(angle - h.rest_angle);
@@ -180,7 +211,8 @@ struct ClothModel::Impl {
               const bool opposite = (i == 2 && j == 3) || (i == 3 && j == 2);
               if (opposite) continue;
               const double scale = (i == j && i >= 2) ? 2.0 : 1.0;
-              add_block(k_values, h.v[i], h.v[j],
+              add_block(k_values, hinge_block_offsets[hi][static_cast<std::size_t>(4 * i + j)],
+                        h.v[j],
                         scale * k * grad.segment<3>(3 * i) * grad.segment<3>(3 * j).transpose());
             }
           }
@@ -319,6 +351,7 @@ ClothModel::ClothModel(const TriangleMesh& mesh, const Positions& rest,
   }
   outer[3 * m.nv] = k;
   std::fill(m.pattern.valuePtr(), m.pattern.valuePtr() + m.pattern.nonZeros(), 0.0);
+  m.find_block_offsets();
   m.last_dv = Eigen::VectorXd::Zero(3 * m.nv);
 }
 
@@ -445,7 +478,7 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0,
       block += h * damping * tangent;
     }
     for (int a = 0; a < 3; ++a) b[3 * i + a] += rhs[a];
-    m.add_block(values, i, i, block);
+    m.add_block(values, m.block_offset(i, i), i, block);
   }
 
   // Pinned vertices: known velocity change, eliminated symmetrically.
