@@ -17,7 +17,8 @@ std::size_t at(int i) {
 /// Fill-reducing elimination order of a symmetric graph (upper triangle of `graph`
 /// stored): CHOLMOD's analysis tries AMD and nested dissection (METIS) and keeps the
 /// sparser factor, postordered so that every subtree of the elimination tree is a range.
-std::vector<int> fill_reducing_order(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& graph) {
+std::vector<int> fill_reducing_order(
+    const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& graph) {
   cholmod_common common;
   cholmod_start(&common);
   common.nmethods = 2;

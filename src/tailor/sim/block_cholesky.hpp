@@ -55,9 +55,9 @@ class BlockCholesky {
   // Factorises the given rows in increasing order; false when a diagonal block is not SPD.
   bool factorize_rows(const std::vector<int>& rows);
 
-  int m_blocks = 0;            // block rows
-  std::vector<int> m_order;    // m_order[new] = old block index
-  std::vector<int> m_rank;     // m_rank[old] = new block index
+  int m_blocks = 0;                     // block rows
+  std::vector<int> m_order;             // m_order[new] = old block index
+  std::vector<int> m_rank;              // m_rank[old] = new block index
   std::int64_t m_scalar_nonzeros = -1;  // A's stored entries at analysis (pattern check)
   // A's upper blocks (row ≤ column, new order) column by column: rows and values; each
   // stored scalar entry of A that lies in one is scattered to m_a_target.

@@ -91,8 +91,8 @@ LinearSolveInfo ClothLinearSolver::solve(const SparseMatrix& A, const Eigen::Vec
   if (method == ClothSolver::automatic) {
     method = A.rows() > kDirectSolveLimit ? ClothSolver::iterative : ClothSolver::direct;
   }
-  const bool reuse = m_method == ClothSolver::automatic && method == ClothSolver::direct &&
-                     A.rows() >= kReuseFrom;
+  const bool reuse =
+      m_method == ClothSolver::automatic && method == ClothSolver::direct && A.rows() >= kReuseFrom;
   if (reuse && m_skip_reuse > 0) {
     --m_skip_reuse;
   } else if (reuse && m_kept && m_reuses < kMaxReuses &&

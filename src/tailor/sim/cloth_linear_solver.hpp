@@ -44,11 +44,11 @@ struct LinearSolveInfo {
 /// stiffness at new positions and by the arm's contact and friction blocks; with
 /// CHOLMOD's factorisation the reuse made the 10× sleeve (20,592 unknowns) faster, with
 /// BlockCholesky's, which is 2-3 times cheaper, it gains nothing measurable there
-/// (docs/simulation.md) but is kept for larger systems. Small systems are factorised every time: on the
-/// default sleeve (2,079 unknowns) a factorisation costs about 9 iterations, and there the
-/// arm's contacts change enough between substeps that 203 of 240 reuses in the elbow
-/// gesture missed 10 iterations at any tolerance from 1e-5 to 1e-8 (an earlier attempt,
-/// 2026-11-24, asked for 1e-10 within 25 iterations and missed in 198 of 240).
+/// (docs/simulation.md) but is kept for larger systems. Small systems are factorised
+/// every time: on the default sleeve (2,079 unknowns) a factorisation costs about 9
+/// iterations, and there the arm's contacts change enough between substeps that 203 of 240 reuses
+/// in the elbow gesture missed 10 iterations at any tolerance from 1e-5 to 1e-8 (an earlier
+/// attempt, 2026-11-24, asked for 1e-10 within 25 iterations and missed in 198 of 240).
 class ClothLinearSolver {
  public:
   using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;

@@ -127,8 +127,9 @@ struct ClothModel::Impl {
         for (int j = 0; j < 4; ++j) {
           const bool opposite = (i == 2 && j == 3) || (i == 3 && j == 2);
           hinge_block_offsets[h][static_cast<std::size_t>(4 * i + j)] =
-              opposite ? -1 : block_offset(hinges[h].v[static_cast<std::size_t>(i)],
-                                           hinges[h].v[static_cast<std::size_t>(j)]);
+              opposite ? -1
+                       : block_offset(hinges[h].v[static_cast<std::size_t>(i)],
+                                      hinges[h].v[static_cast<std::size_t>(j)]);
         }
       }
     }
@@ -181,8 +182,8 @@ struct ClothModel::Impl {
           for (int j = 0; j < 3; ++j) {
             const Mat3 block = r.area * (ks * (r.cu[i] * r.cu[j] * pu + r.cv[i] * r.cv[j] * pv) +
                                          ksh * g[i] * g[j].transpose());
-            add_block(k_values, face_block_offsets[static_cast<std::size_t>(t)][3 * i + j],
-                      vid[j], block);
+            add_block(k_values, face_block_offsets[static_cast<std::size_t>(t)][3 * i + j], vid[j],
+                      block);
           }
         }
       }
