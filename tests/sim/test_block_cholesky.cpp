@@ -46,15 +46,7 @@ SparseMatrix random_block_system(int vertices, unsigned seed_pattern, unsigned s
       continue;
     }
     const Eigen::Vector3d d(u(values), u(values), u(values));
-    const Eigen::Matrix3d k = 10 * d * d.transpose() + Eigen::Matrix3d::Identity();
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c) {
-        t.emplace_back(3 * a + r, 3 * a + c, k(r, c));
-        t.emplace_back(3 * b + r, 3 * b + c, k(r, c));
-        t.emplace_back(3 * a + r, 3 * b + c, -k(r, c));
-        t.emplace_back(3 * b + r, 3 * a + c, -k(r, c));
-      }
-    }
+    add_vertex_coupling(t, a, b, 10 * d * d.transpose() + Eigen::Matrix3d::Identity());
   }
   SparseMatrix A(3 * vertices, 3 * vertices);
   A.setFromTriplets(t.begin(), t.end());
