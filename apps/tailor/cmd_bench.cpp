@@ -89,7 +89,8 @@ int run_scale(const BenchArgs& args) {
   fmt::print(
       "Milliseconds per step (median of at least {} steps and {} s per row), preset paper; floor "
       "= every face's swept box from x0 and x1; B/triangle = peak memory of topology + detector "
-      "+ step buffers.\n",
+      "+ step buffers; speed-up = the first thread count's step over this one's, median of paired "
+      "rounds (one step of each thread count in turn).\n",
       args.repetitions, args.min_seconds);
   fmt::print("written to {}/\n", args.out);
   return kSuccess;

@@ -226,5 +226,39 @@ TEST(MeshBvh, RefitBoxesHoldTheSweptTrianglesAndMasksHoldEveryNormal) {
   }
 }
 
+TEST(MeshBvh, RefitBoxesAreTheTightestFloatBoxes) {
+  // A leaf's box is its face's swept box rounded outward by float_at_most/at_least, and an
+  // inner node's is the union of its children's, exactly: this catches a refit that pairs
+  // a node with the wrong children or the wrong leaf, which the containment check above
+  // would let through whenever the wrong box happens to be larger.
+  for (const BvhCase& c : bvh_cases()) {
+    const TriangleMesh mesh(static_cast<Index>(c.mesh.vertices.rows()), c.mesh.faces);
+    MeshBvh bvh(mesh, c.mesh.vertices);
+    for (const bool with_directions : {false, true}) {
+      bvh.refit(c.mesh.vertices, c.x1, with_directions);
+      for (Index node = 0; node < bvh.num_nodes(); ++node) {
+        FloatBox expected;
+        if (bvh.is_leaf(node)) {
+          for (int k = 0; k < 3; ++k) {
+            double low = std::numeric_limits<double>::infinity(), high = -low;
+            for (const Positions* x : {&c.mesh.vertices, &c.x1}) {
+              for (int corner = 0; corner < 3; ++corner) {
+                const double value = (*x)(mesh.faces()(bvh.leaf_face(node), corner), k);
+                low = std::min(low, value), high = std::max(high, value);
+              }
+            }
+            expected.min[k] = float_at_most(low), expected.max[k] = float_at_least(high);
+          }
+        } else {
+          expected = bvh.box(bvh.left(node));
+          expected.extend(bvh.box(bvh.right(node)));
+        }
+        ASSERT_EQ(bvh.box(node).min, expected.min) << c.name << " node " << node;
+        ASSERT_EQ(bvh.box(node).max, expected.max) << c.name << " node " << node;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tailor

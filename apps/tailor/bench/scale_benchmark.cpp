@@ -120,46 +120,86 @@ double sum(const std::vector<double>& values) {
   return std::accumulate(values.begin(), values.end(), 0.0);
 }
 
-ScaleRow measure(const std::string& name, const ScaleScene& scene, int threads,
-                 const ScaleOptions& options) {
-  ScaleRow row;
-  row.scene = name;
-  row.threads = threads;
+// Peak memory per triangle of a detector on `threads` threads: the rise of the peak resident
+// set size while the mesh topology and the detector are built and run two steps (the
+// buffers reach their size in the first).
+double bytes_per_triangle(const ScaleScene& scene, int threads) {
   const double resident_before = reset_peak();
-  {
-    const TriangleMesh mesh(static_cast<Index>(scene.mesh.vertices.rows()), scene.mesh.faces);
-    row.triangles = mesh.num_faces();
+  const TriangleMesh mesh(static_cast<Index>(scene.mesh.vertices.rows()), scene.mesh.faces);
+  DetectionConfig config = DetectionConfig::preset("paper");
+  config.threads = threads;
+  SelfCollisionDetector detector(mesh, scene.mesh.vertices, config, scene.section_loops);
+  for (int step = 0; step < 2; ++step) detector.detect(scene.mesh.vertices, scene.x1);
+  return (status_bytes("VmHWM:") - resident_before) / static_cast<double>(mesh.num_faces());
+}
+
+// The timed steps of one thread count.
+struct Timings {
+  std::vector<double> refit, traversal, radial, low, ccd, total, floor;
+  DetectionStats stats;
+};
+
+// One row per thread count of `options`, timed in rounds: each round runs one step on each
+// thread count in turn, so that the machine's drifts in speed fall on all of them alike
+// and the ratio of two thread counts within a round is a paired figure.
+std::vector<ScaleRow> measure(const std::string& name, const ScaleScene& scene,
+                              const ScaleOptions& options) {
+  const std::size_t configs = options.threads.size();
+  std::vector<ScaleRow> rows(configs);
+  for (std::size_t i = 0; i < configs; ++i) {
+    rows[i].scene = name;
+    rows[i].threads = options.threads[i];
+    rows[i].triangles = static_cast<Index>(scene.mesh.faces.rows());
+    rows[i].bytes_per_triangle = bytes_per_triangle(scene, options.threads[i]);
+  }
+  const TriangleMesh mesh(static_cast<Index>(scene.mesh.vertices.rows()), scene.mesh.faces);
+  std::vector<std::unique_ptr<SelfCollisionDetector>> detectors;
+  std::vector<std::unique_ptr<tbb::task_arena>> arenas;
+  std::vector<Aabb> boxes(static_cast<std::size_t>(mesh.num_faces()));
+  for (const int threads : options.threads) {
     DetectionConfig config = DetectionConfig::preset("paper");
     config.threads = threads;
-    SelfCollisionDetector detector(mesh, scene.mesh.vertices, config, scene.section_loops);
-    detector.detect(scene.mesh.vertices, scene.x1);  // warm-up: buffers reach their size
-    std::vector<double> refit, traversal, radial, low, ccd, total;
-    DetectionStats stats;
-    while (more_runs(options, total.size(), sum(total))) {
-      stats = detector.detect(scene.mesh.vertices, scene.x1).stats;
-      refit.push_back(stats.refit_ms), traversal.push_back(stats.traversal_ms);
-      radial.push_back(stats.radial_view_ms);
-      low.push_back(stats.pair_generation_ms), ccd.push_back(stats.ccd_ms);
-      total.push_back(stats.total_ms);
+    detectors.push_back(std::make_unique<SelfCollisionDetector>(mesh, scene.mesh.vertices, config,
+                                                                scene.section_loops));
+    detectors.back()->detect(scene.mesh.vertices, scene.x1);  // warm-up: buffers reach their size
+    arenas.push_back(std::make_unique<tbb::task_arena>(threads));
+    floor_ms(scene.mesh.faces, scene.mesh.vertices, scene.x1, boxes, *arenas.back());
+  }
+  std::vector<Timings> timings(configs);
+  std::vector<std::vector<double>> round_speedups(configs);
+  // Every thread count gets at least min_seconds (the fastest gets there last).
+  double least_ms = 0;
+  for (std::size_t rounds = 0; more_runs(options, rounds, least_ms); ++rounds) {
+    for (std::size_t i = 0; i < configs; ++i) {
+      Timings& t = timings[i];
+      t.stats = detectors[i]->detect(scene.mesh.vertices, scene.x1).stats;
+      t.refit.push_back(t.stats.refit_ms), t.traversal.push_back(t.stats.traversal_ms);
+      t.radial.push_back(t.stats.radial_view_ms);
+      t.low.push_back(t.stats.pair_generation_ms), t.ccd.push_back(t.stats.ccd_ms);
+      t.total.push_back(t.stats.total_ms);
+      t.floor.push_back(
+          floor_ms(scene.mesh.faces, scene.mesh.vertices, scene.x1, boxes, *arenas[i]));
     }
-    row.bytes_per_triangle = (status_bytes("VmHWM:") - resident_before) / row.triangles;
-    row.refit_ms = median(refit), row.traversal_ms = median(traversal);
-    row.radial_view_ms = median(radial);
-    row.low_level_ms = median(low), row.ccd_ms = median(ccd), row.total_ms = median(total);
-    row.ctps = stats.candidate_triangle_pairs;
-    row.vf = stats.vf_tested, row.ee = stats.ee_tested;
-    row.collisions = stats.vf_colliding + stats.ee_colliding;
+    least_ms = sum(timings[0].total);
+    for (std::size_t i = 0; i < configs; ++i) {
+      round_speedups[i].push_back(timings[0].total.back() / timings[i].total.back());
+      least_ms = std::min(least_ms, sum(timings[i].total));
+    }
   }
-  std::vector<Aabb> boxes(static_cast<std::size_t>(row.triangles));
-  tbb::task_arena arena(threads);
-  floor_ms(scene.mesh.faces, scene.mesh.vertices, scene.x1, boxes, arena);  // warm-up
-  std::vector<double> floor;
-  while (more_runs(options, floor.size(), sum(floor))) {
-    floor.push_back(floor_ms(scene.mesh.faces, scene.mesh.vertices, scene.x1, boxes, arena));
+  for (std::size_t i = 0; i < configs; ++i) {
+    const Timings& t = timings[i];
+    ScaleRow& row = rows[i];
+    row.refit_ms = median(t.refit), row.traversal_ms = median(t.traversal);
+    row.radial_view_ms = median(t.radial);
+    row.low_level_ms = median(t.low), row.ccd_ms = median(t.ccd), row.total_ms = median(t.total);
+    row.floor_ms = median(t.floor);
+    row.speedup = median(round_speedups[i]);
+    row.ctps = t.stats.candidate_triangle_pairs;
+    row.vf = t.stats.vf_tested, row.ee = t.stats.ee_tested;
+    row.collisions = t.stats.vf_colliding + t.stats.ee_colliding;
+    row.peak_mib = status_bytes("VmHWM:") / (1024.0 * 1024.0);
   }
-  row.floor_ms = median(floor);
-  row.peak_mib = status_bytes("VmHWM:") / (1024.0 * 1024.0);
-  return row;
+  return rows;
 }
 
 std::string with_commas(std::int64_t value) {
@@ -194,13 +234,10 @@ std::vector<ScaleRow> run_scale_benchmark(const ScaleOptions& options) {
   for (const std::string& name : options.scenes) {
     for (Index target : sizes) {
       const ScaleScene scene = make_scene(name, target);
-      for (int threads : options.threads) {
-        if (options.progress) {
-          options.progress(fmt::format("{} {} triangles, {} thread{}", name,
-                                       scene.mesh.faces.rows(), threads, threads > 1 ? "s" : ""));
-        }
-        rows.push_back(measure(name, scene, threads, options));
+      if (options.progress) {
+        options.progress(fmt::format("{} {} triangles", name, scene.mesh.faces.rows()));
       }
+      for (ScaleRow& row : measure(name, scene, options)) rows.push_back(std::move(row));
     }
   }
   return rows;
@@ -209,13 +246,14 @@ std::vector<ScaleRow> run_scale_benchmark(const ScaleOptions& options) {
 std::string scale_csv(const std::vector<ScaleRow>& rows) {
   std::string csv =
       "scene,threads,triangles,floor_ms,refit_ms,traversal_ms,radial_view_ms,low_level_ms,ccd_ms,"
-      "total_ms,ctps,vf,ee,collisions,pairs_per_collision,bytes_per_triangle,peak_mib\n";
+      "total_ms,speedup,ctps,vf,ee,collisions,pairs_per_collision,bytes_per_triangle,peak_mib\n";
   for (const ScaleRow& r : rows) {
     csv += fmt::format(
-        "{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{},{},{},{},{:.3f},{:.1f},{:.1f}"
-        "\n",
+        "{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{},{},{},{},{:.3f},{:.1f}"
+        ","
+        "{:.1f}\n",
         r.scene, r.threads, r.triangles, r.floor_ms, r.refit_ms, r.traversal_ms, r.radial_view_ms,
-        r.low_level_ms, r.ccd_ms, r.total_ms, r.ctps, r.vf, r.ee, r.collisions,
+        r.low_level_ms, r.ccd_ms, r.total_ms, r.speedup, r.ctps, r.vf, r.ee, r.collisions,
         r.pairs_per_collision(), r.bytes_per_triangle, r.peak_mib);
   }
   return csv;
@@ -224,15 +262,15 @@ std::string scale_csv(const std::vector<ScaleRow>& rows) {
 std::string scale_markdown(const std::vector<ScaleRow>& rows) {
   std::string md =
       "| scene | threads | triangles | floor | refit | traversal | radial view | low level | "
-      "exact CCD | total | all but CCD | CTPs | to CCD | collisions | pairs/collision | "
-      "B/triangle |\n"
-      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+      "exact CCD | total | speed-up | all but CCD | CTPs | to CCD | collisions | "
+      "pairs/collision | B/triangle |\n"
+      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const ScaleRow& r : rows) {
     md += fmt::format(
-        "| {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | "
-        "{} | {} | {} | {:.2f} | {:.0f} |\n",
+        "| {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f}× | "
+        "{:.2f} | {} | {} | {} | {:.2f} | {:.0f} |\n",
         r.scene, r.threads, with_commas(r.triangles), r.floor_ms, r.refit_ms, r.traversal_ms,
-        r.radial_view_ms, r.low_level_ms, r.ccd_ms, r.total_ms, r.total_ms - r.ccd_ms,
+        r.radial_view_ms, r.low_level_ms, r.ccd_ms, r.total_ms, r.speedup, r.total_ms - r.ccd_ms,
         with_commas(r.ctps), with_commas(r.vf + r.ee), with_commas(r.collisions),
         r.pairs_per_collision(), r.bytes_per_triangle);
   }

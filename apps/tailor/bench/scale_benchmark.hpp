@@ -20,6 +20,10 @@ struct ScaleRow {
   int threads = 1;
   Index triangles = 0;
   double floor_ms = 0;  ///< read x0 and x1 and compute every face's swept box (same threads)
+  /// The first thread count's whole step over this one's, median over rounds that time one
+  /// step of each thread count in turn (paired, so the machine's drifts cancel); 1 for the
+  /// first thread count.
+  double speedup = 1;
   double refit_ms = 0, traversal_ms = 0, radial_view_ms = 0, low_level_ms = 0, ccd_ms = 0,
          total_ms = 0;
   std::int64_t ctps = 0, vf = 0, ee = 0, collisions = 0;
@@ -56,7 +60,8 @@ struct ScaleOptions {
 std::vector<std::string> scale_scene_names();
 
 /// Runs every scene at sizes min_triangles·√10^k up to max_triangles, for each thread
-/// count, preset `paper`. Throws InputError for an unknown scene.
+/// count, preset `paper`; the thread counts of a size are timed in alternation (one step
+/// each per round). Throws InputError for an unknown scene.
 std::vector<ScaleRow> run_scale_benchmark(const ScaleOptions& options);
 
 /// CSV with one row per ScaleRow (header included).
