@@ -9,7 +9,7 @@ set -euo pipefail
 "$(dirname "$0")/install-web-deps.sh"
 
 packages=(
-  g++ cmake make pkg-config
+  g++ cmake make ninja-build pkg-config
   libeigen3-dev libtbb-dev libfmt-dev libspdlog-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev
   libpng-dev
