@@ -120,16 +120,23 @@ double sum(const std::vector<double>& values) {
   return std::accumulate(values.begin(), values.end(), 0.0);
 }
 
+// The detector `bench scale` measures: preset paper on `threads` threads.
+std::unique_ptr<SelfCollisionDetector> paper_detector(const TriangleMesh& mesh,
+                                                      const ScaleScene& scene, int threads) {
+  DetectionConfig config = DetectionConfig::preset("paper");
+  config.threads = threads;
+  return std::make_unique<SelfCollisionDetector>(mesh, scene.mesh.vertices, config,
+                                                 scene.section_loops);
+}
+
 // Peak memory per triangle of a detector on `threads` threads: the rise of the peak resident
 // set size while the mesh topology and the detector are built and run two steps (the
 // buffers reach their size in the first).
 double bytes_per_triangle(const ScaleScene& scene, int threads) {
   const double resident_before = reset_peak();
   const TriangleMesh mesh(static_cast<Index>(scene.mesh.vertices.rows()), scene.mesh.faces);
-  DetectionConfig config = DetectionConfig::preset("paper");
-  config.threads = threads;
-  SelfCollisionDetector detector(mesh, scene.mesh.vertices, config, scene.section_loops);
-  for (int step = 0; step < 2; ++step) detector.detect(scene.mesh.vertices, scene.x1);
+  const auto detector = paper_detector(mesh, scene, threads);
+  for (int step = 0; step < 2; ++step) detector->detect(scene.mesh.vertices, scene.x1);
   return (status_bytes("VmHWM:") - resident_before) / static_cast<double>(mesh.num_faces());
 }
 
@@ -157,10 +164,7 @@ std::vector<ScaleRow> measure(const std::string& name, const ScaleScene& scene,
   std::vector<std::unique_ptr<tbb::task_arena>> arenas;
   std::vector<Aabb> boxes(static_cast<std::size_t>(mesh.num_faces()));
   for (const int threads : options.threads) {
-    DetectionConfig config = DetectionConfig::preset("paper");
-    config.threads = threads;
-    detectors.push_back(std::make_unique<SelfCollisionDetector>(mesh, scene.mesh.vertices, config,
-                                                                scene.section_loops));
+    detectors.push_back(paper_detector(mesh, scene, threads));
     detectors.back()->detect(scene.mesh.vertices, scene.x1);  // warm-up: buffers reach their size
     arenas.push_back(std::make_unique<tbb::task_arena>(threads));
     floor_ms(scene.mesh.faces, scene.mesh.vertices, scene.x1, boxes, *arenas.back());
@@ -249,9 +253,8 @@ std::string scale_csv(const std::vector<ScaleRow>& rows) {
       "total_ms,speedup,ctps,vf,ee,collisions,pairs_per_collision,bytes_per_triangle,peak_mib\n";
   for (const ScaleRow& r : rows) {
     csv += fmt::format(
-        "{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{},{},{},{},{:.3f},{:.1f}"
-        ","
-        "{:.1f}\n",
+        "{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},"
+        "{},{},{},{},{:.3f},{:.1f},{:.1f}\n",
         r.scene, r.threads, r.triangles, r.floor_ms, r.refit_ms, r.traversal_ms, r.radial_view_ms,
         r.low_level_ms, r.ccd_ms, r.total_ms, r.speedup, r.ctps, r.vf, r.ee, r.collisions,
         r.pairs_per_collision(), r.bytes_per_triangle, r.peak_mib);

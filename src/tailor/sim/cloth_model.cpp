@@ -34,6 +34,12 @@ struct Hinge {
   double rest_angle = 0;
 };
 
+/// Whether hinge vertices i and j are the two opposite vertices (c, d), whose coupling the
+/// stiffness lumps onto their diagonal blocks (evaluate()).
+constexpr bool hinge_opposite_pair(int i, int j) {
+  return (i == 2 && j == 3) || (i == 3 && j == 2);
+}
+
 using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point t) {
@@ -125,11 +131,10 @@ struct ClothModel::Impl {
     for (std::size_t h = 0; h < hinges.size(); ++h) {
       for (int i = 0; i < 4; ++i) {
         for (int j = 0; j < 4; ++j) {
-          const bool opposite = (i == 2 && j == 3) || (i == 3 && j == 2);
           hinge_block_offsets[h][static_cast<std::size_t>(4 * i + j)] =
-              opposite ? -1
-                       : block_offset(hinges[h].v[static_cast<std::size_t>(i)],
-                                      hinges[h].v[static_cast<std::size_t>(j)]);
+              hinge_opposite_pair(i, j) ? -1
+                                        : block_offset(hinges[h].v[static_cast<std::size_t>(i)],
+                                                       hinges[h].v[static_cast<std::size_t>(j)]);
         }
       }
     }
@@ -209,8 +214,7 @@ struct ClothModel::Impl {
           // own graph (much less fill-in in the Cholesky factor than with hinge pairs).
           for (int i = 0; i < 4; ++i) {
             for (int j = 0; j < 4; ++j) {
-              const bool opposite = (i == 2 && j == 3) || (i == 3 && j == 2);
-              if (opposite) continue;
+              if (hinge_opposite_pair(i, j)) continue;
               const double scale = (i == j && i >= 2) ? 2.0 : 1.0;
               add_block(k_values, hinge_block_offsets[hi][static_cast<std::size_t>(4 * i + j)],
                         h.v[j],
