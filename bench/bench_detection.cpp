@@ -3,11 +3,14 @@
 // 1 and 2 threads; the refit of boxes and cones alone, for comparison.
 
 #include <benchmark/benchmark.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <map>
 #include <memory>
 
+#include "tailor/bvh/aabb.hpp"
 #include "tailor/bvh/mesh_bvh.hpp"
 #include "tailor/detection/self_collision_detector.hpp"
 #include "tailor/mesh/procedural_meshes.hpp"
@@ -107,6 +110,51 @@ void BM_RefitBoxesOnly(benchmark::State& state) {
   refit(state, false);
 }
 
+// The floor the refit is measured against (as in `tailor bench scale`): every face's
+// swept box (double) from x0 and x1, in parallel, stored.
+void BM_SweptBoxFloor(benchmark::State& state) {
+  const Scene& s = scene(static_cast<int>(state.range(0)), state.range(2) / 100.0);
+  const FaceArray& faces = s.mesh->faces();
+  std::vector<Aabb> boxes(static_cast<std::size_t>(faces.rows()));
+  tbb::task_arena arena(static_cast<int>(state.range(1)));
+  for (auto _ : state) {
+    arena.execute([&] {
+      tbb::parallel_for(
+          tbb::blocked_range<Index>(0, static_cast<Index>(faces.rows()), 4096),
+          [&](const tbb::blocked_range<Index>& range) {
+            for (Index f = range.begin(); f < range.end(); ++f) {
+              boxes[f] = swept_box(s.x0, s.x1, {faces(f, 0), faces(f, 1), faces(f, 2)});
+            }
+          });
+    });
+    benchmark::DoNotOptimize(boxes.data());
+  }
+  state.counters["triangles"] = s.mesh->num_faces();
+}
+
+// The direction-mask kernel alone on batches in cache: 1,024 batches of 12 triangles of
+// the crumpling cloth's 10K-triangle step (as the refit forms them: consecutive faces).
+void BM_DirectionMaskKernel(benchmark::State& state) {
+  const Scene& s = scene(71, 0.5);
+  const FaceArray& faces = s.mesh->faces();
+  std::vector<MovingTriangleBatch> batches(1024);
+  for (std::size_t b = 0; b < batches.size(); ++b) {
+    for (int i = 0; i < 12; ++i) {
+      const Index f = static_cast<Index>((12 * b + i) % faces.rows());
+      const auto row = [&](const Positions& x, int k) { return x.row(faces(f, k)).data(); };
+      batches[b].add(row(s.x0, 0), row(s.x0, 1), row(s.x0, 2), row(s.x1, 0), row(s.x1, 1),
+                     row(s.x1, 2));
+    }
+    batches[b].pad();
+  }
+  for (auto _ : state) {
+    DirectionMask all = 0;
+    for (const MovingTriangleBatch& batch : batches) all |= direction_mask(batch);
+    benchmark::DoNotOptimize(all);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * 12 * 1024);
+}
+
 void sizes(benchmark::internal::Benchmark* b) {
   for (int cells : {71, 224, 708}) {  // ~10K, 100K, 1M triangles
     for (int threads : {1, 2}) {
@@ -124,6 +172,8 @@ BENCHMARK(BM_DetectFoldedStep)
     ->UseRealTime();
 BENCHMARK(BM_RefitOnly)->Apply(sizes);
 BENCHMARK(BM_RefitBoxesOnly)->Apply(sizes);
+BENCHMARK(BM_SweptBoxFloor)->Apply(sizes);
+BENCHMARK(BM_DirectionMaskKernel);
 
 }  // namespace
 }  // namespace tailor

@@ -149,21 +149,12 @@ TriangleMesh::TriangleMesh(Index num_vertices, FaceArray faces)
     }
   }
 
-  // --- Vertex -> edges (edges visited in order, so each list is increasing).
-  m_vertex_edge_offsets.assign(static_cast<std::size_t>(nv) + 1, 0);
-  for (Index e = 0; e < ne; ++e) {
-    ++m_vertex_edge_offsets[m_edges(e, 0) + 1];
-    ++m_vertex_edge_offsets[m_edges(e, 1) + 1];
-  }
-  counts_to_offsets(m_vertex_edge_offsets);
-  m_vertex_edge_ids.resize(2 * static_cast<std::size_t>(ne));
-  {
-    std::vector<Index> cursor(m_vertex_edge_offsets.begin(), m_vertex_edge_offsets.end() - 1);
-    for (Index e = 0; e < ne; ++e) {
-      m_vertex_edge_ids[cursor[m_edges(e, 0)]++] = e;
-      m_vertex_edge_ids[cursor[m_edges(e, 1)]++] = e;
-    }
-  }
+  // --- Edges by their larger vertex: edges are sorted by (b, a), so the edges (a, b) of
+  // one b are a contiguous, a-sorted range. (A full vertex -> edges table took 14 bytes
+  // per triangle, which the detector never reads; vertex_edges() assembles a list.)
+  m_edge_end_offsets.assign(static_cast<std::size_t>(nv) + 1, 0);
+  for (Index e = 0; e < ne; ++e) ++m_edge_end_offsets[m_edges(e, 1) + 1];
+  counts_to_offsets(m_edge_end_offsets);
 
   // --- Validation warnings.
   for (Index e = 0; e < ne; ++e) {
@@ -302,9 +293,20 @@ std::span<const Index> TriangleMesh::vertex_faces(Index v) const {
           static_cast<std::size_t>(m_vertex_face_offsets[v + 1] - m_vertex_face_offsets[v])};
 }
 
-std::span<const Index> TriangleMesh::vertex_edges(Index v) const {
-  return {m_vertex_edge_ids.data() + m_vertex_edge_offsets[v],
-          static_cast<std::size_t>(m_vertex_edge_offsets[v + 1] - m_vertex_edge_offsets[v])};
+std::vector<Index> TriangleMesh::vertex_edges(Index v) const {
+  // Edges (a, v), a < v: the range of v's larger-vertex edges; edges (v, b), b > v: sides
+  // of v's faces.
+  std::vector<Index> edges;
+  for (Index e = m_edge_end_offsets[v]; e < m_edge_end_offsets[v + 1]; ++e) edges.push_back(e);
+  const std::size_t ending_here = edges.size();
+  for (Index f : vertex_faces(v)) {
+    for (Index e : face_edges(f)) {
+      if (m_edges(e, 0) == v) edges.push_back(e);
+    }
+  }
+  std::sort(edges.begin() + static_cast<std::ptrdiff_t>(ending_here), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
 }
 
 std::span<const Index> TriangleMesh::boundary_loop(Index i) const {
@@ -315,13 +317,17 @@ std::span<const Index> TriangleMesh::boundary_loop(Index i) const {
 Index TriangleMesh::find_edge(Index a, Index b) const {
   if (a < 0 || b < 0 || a >= m_num_vertices || b >= m_num_vertices || a == b) return -1;
   const Index lo = std::min(a, b), hi = std::max(a, b);
-  // Edges ending at `hi` come after all edges of smaller `b`; vertex_edges(lo) is sorted by
-  // edge id, hence by (b, a): binary search for the one whose larger vertex is `hi`.
-  const auto edges = vertex_edges(lo);
-  auto it = std::lower_bound(edges.begin(), edges.end(), hi,
-                             [&](Index e, Index key) { return m_edges(e, 1) < key; });
-  // Edges (x, lo) with x < lo have b == lo < hi, so they sort before; only (lo, hi) has b == hi.
-  if (it != edges.end() && m_edges(*it, 1) == hi && m_edges(*it, 0) == lo) return *it;
+  // The edges (a, hi) are a contiguous range sorted by a: binary search for a = lo.
+  Index begin = m_edge_end_offsets[hi], end = m_edge_end_offsets[hi + 1];
+  while (begin < end) {
+    const Index mid = begin + (end - begin) / 2;
+    if (m_edges(mid, 0) < lo) {
+      begin = mid + 1;
+    } else {
+      end = mid;
+    }
+  }
+  if (begin < m_edge_end_offsets[hi + 1] && m_edges(begin, 0) == lo) return begin;
   return -1;
 }
 

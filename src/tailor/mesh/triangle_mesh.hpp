@@ -52,8 +52,9 @@ class TriangleMesh {
   std::span<const Index> edge_faces(Index e) const;
   /// Faces incident to vertex `v`, in increasing order.
   std::span<const Index> vertex_faces(Index v) const;
-  /// Edges incident to vertex `v`, in increasing order.
-  std::span<const Index> vertex_edges(Index v) const;
+  /// Edges incident to vertex `v`, in increasing order (assembled on each call from the
+  /// edge order and vertex_faces(): no table of them is kept).
+  std::vector<Index> vertex_edges(Index v) const;
 
   /// Id of edge `(a, b)` (either order), or -1 if there is none.
   Index find_edge(Index a, Index b) const;
@@ -91,7 +92,7 @@ class TriangleMesh {
   std::vector<Index> m_face_edges;  // 3 per face
   std::vector<Index> m_edge_face_offsets, m_edge_face_ids;
   std::vector<Index> m_vertex_face_offsets, m_vertex_face_ids;
-  std::vector<Index> m_vertex_edge_offsets, m_vertex_edge_ids;
+  std::vector<Index> m_edge_end_offsets;  // edges (a, b) of each b: a contiguous range
   std::vector<Index> m_loop_offsets{0}, m_loop_vertices;
   std::vector<Index> m_face_component;
   Index m_num_components = 0;
