@@ -3,8 +3,6 @@
 // 1 and 2 threads; the refit of boxes and cones alone, for comparison.
 
 #include <benchmark/benchmark.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <map>
@@ -118,15 +116,7 @@ void BM_SweptBoxFloor(benchmark::State& state) {
   std::vector<Aabb> boxes(static_cast<std::size_t>(faces.rows()));
   tbb::task_arena arena(static_cast<int>(state.range(1)));
   for (auto _ : state) {
-    arena.execute([&] {
-      tbb::parallel_for(
-          tbb::blocked_range<Index>(0, static_cast<Index>(faces.rows()), 4096),
-          [&](const tbb::blocked_range<Index>& range) {
-            for (Index f = range.begin(); f < range.end(); ++f) {
-              boxes[f] = swept_box(s.x0, s.x1, {faces(f, 0), faces(f, 1), faces(f, 2)});
-            }
-          });
-    });
+    arena.execute([&] { swept_face_boxes(faces, s.x0, s.x1, boxes); });
     benchmark::DoNotOptimize(boxes.data());
   }
   state.counters["triangles"] = s.mesh->num_faces();

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 #include <malloc.h>
-#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -99,14 +98,7 @@ ScaleScene make_scene(const std::string& name, Index triangles) {
 double floor_ms(const FaceArray& faces, const Positions& x0, const Positions& x1,
                 std::vector<Aabb>& boxes, tbb::task_arena& arena) {
   const auto start = std::chrono::steady_clock::now();
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(faces.rows()), 4096),
-                      [&](const tbb::blocked_range<Index>& range) {
-                        for (Index f = range.begin(); f < range.end(); ++f) {
-                          boxes[f] = swept_box(x0, x1, {faces(f, 0), faces(f, 1), faces(f, 2)});
-                        }
-                      });
-  });
+  arena.execute([&] { swept_face_boxes(faces, x0, x1, boxes); });
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
       .count();
 }

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <initializer_list>
 #include <limits>
+#include <span>
 
 #include "tailor/geometry/types.hpp"
 
@@ -42,5 +43,12 @@ inline Aabb swept_box(const Positions& x0, const Positions& x1,
   }
   return box;
 }
+
+/// boxes[f] = the swept box of face f, for every face, in parallel on the current task
+/// arena's threads (`boxes` holds one per face). Also the floor the BVH refit is measured
+/// against (`tailor bench scale`, BM_SweptBoxFloor): the time to read x0 and x1 and touch
+/// every triangle once.
+void swept_face_boxes(const FaceArray& faces, const Positions& x0, const Positions& x1,
+                      std::span<Aabb> boxes);
 
 }  // namespace tailor

@@ -47,9 +47,7 @@ CollisionSet brute_force_self_collisions(const TriangleMesh& mesh, const Positio
   const FaceArray& faces = mesh.faces();
   const EdgeArray& edges = mesh.edges();
   std::vector<Aabb> face_boxes(static_cast<std::size_t>(mesh.num_faces()));
-  for (Index f = 0; f < mesh.num_faces(); ++f) {
-    face_boxes[f] = swept_box(x0, x1, {faces(f, 0), faces(f, 1), faces(f, 2)});
-  }
+  swept_face_boxes(faces, x0, x1, face_boxes);
   std::vector<Aabb> edge_boxes(static_cast<std::size_t>(mesh.num_edges()));
   for (Index e = 0; e < mesh.num_edges(); ++e) {
     edge_boxes[e] = swept_box(x0, x1, {edges(e, 0), edges(e, 1)});

@@ -318,6 +318,7 @@ Index TriangleMesh::find_edge(Index a, Index b) const {
   if (a < 0 || b < 0 || a >= m_num_vertices || b >= m_num_vertices || a == b) return -1;
   const Index lo = std::min(a, b), hi = std::max(a, b);
   // The edges (a, hi) are a contiguous range sorted by a: binary search for a = lo.
+  // (By hand: clang 14 cannot compile libstdc++ 12's views::iota for ranges::lower_bound.)
   Index begin = m_edge_end_offsets[hi], end = m_edge_end_offsets[hi + 1];
   while (begin < end) {
     const Index mid = begin + (end - begin) / 2;
