@@ -1,5 +1,9 @@
 # Thin wrapper over the CMake presets. Every target installs its own dependencies first.
 JOBS ?= 2
+# Extra cache settings for the release configure, e.g. CMAKE_ARGS=-DCMAKE_UNITY_BUILD=ON
+# (what CI uses: a clean build in about half the compile time, but a one-file change
+# recompiles its whole batch, so it is not the default for working trees).
+CMAKE_ARGS ?=
 BUILD := build/release
 TAILOR := $(BUILD)/tailor
 
@@ -9,7 +13,7 @@ deps:
 	@scripts/install-deps.sh
 
 build: deps
-	@cmake --preset release >/dev/null
+	@cmake --preset release $(CMAKE_ARGS) >/dev/null
 	@cmake --build --preset release -j $(JOBS)
 
 ## The main job: the arm-sleeve simulation (no input needed): OBJ frames, contact files,

@@ -96,7 +96,7 @@ int run_scale(const BenchArgs& args) {
   return kSuccess;
 }
 
-const CommandRegistration registration{
+const CommandRegistration bench_registration{
     "bench", [](CLI::App& app) {
       auto args = std::make_shared<BenchArgs>();
       CLI::App* bench = app.add_subcommand("bench", "Reproduce the paper's experiment and scaling");

@@ -157,7 +157,7 @@ int run_ccd_check(const std::vector<std::string>& files, const std::vector<std::
   return total.fn > 0 ? kFailure : kSuccess;
 }
 
-const CommandRegistration registration{
+const CommandRegistration ccd_check_registration{
     "ccd-check", [](CLI::App& app) -> std::function<int()> {
       CLI::App* command = app.add_subcommand(
           "ccd-check",

@@ -226,7 +226,7 @@ int run_check(const CheckArgs& args) {
   return interrupted ? kInterruptedExitCode : kSuccess;
 }
 
-const CommandRegistration registration{
+const CommandRegistration check_registration{
     "check", [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<CheckArgs>();
       CLI::App* command = app.add_subcommand(

@@ -50,7 +50,7 @@ int run_check_intersections(const std::string& mesh_file, const std::string& obs
   return report.intersection_free() ? kSuccess : kFailure;
 }
 
-const CommandRegistration registration{
+const CommandRegistration check_intersections_registration{
     "check-intersections", [](CLI::App& app) -> std::function<int()> {
       CLI::App* command = app.add_subcommand(
           "check-intersections",

@@ -120,7 +120,7 @@ int run_detect(const DetectArgs& args) {
   return kSuccess;
 }
 
-const CommandRegistration registration{
+const CommandRegistration detect_registration{
     "detect", [](CLI::App& app) {
       auto args = std::make_shared<DetectArgs>();
       CLI::App* command =

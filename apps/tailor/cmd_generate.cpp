@@ -36,7 +36,7 @@ int run_generate(const GenerateOptions& options) {
   return kSuccess;
 }
 
-const CommandRegistration registration{
+const CommandRegistration generate_registration{
     "generate", [](CLI::App& app) -> std::function<int()> {
       CLI::App* command = app.add_subcommand(
           "generate", "Write a procedural deforming step (t0.ply, t1.ply) for detect and bench");

@@ -48,7 +48,7 @@ int run_info(const std::string& file) {
   return kSuccess;
 }
 
-const CommandRegistration registration{
+const CommandRegistration info_registration{
     "info", [](CLI::App& app) -> std::function<int()> {
       CLI::App* command = app.add_subcommand("info", "Print counts, topology and bounds of a mesh");
       auto file = std::make_shared<std::string>();

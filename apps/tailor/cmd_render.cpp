@@ -33,7 +33,7 @@ int run_render(const RenderOptions& o) {
   return kSuccess;
 }
 
-const CommandRegistration registration{
+const CommandRegistration render_registration{
     "render", [](CLI::App& app) -> std::function<int()> {
       CLI::App* cmd = app.add_subcommand(
           "render", "PNG pictures of a `tailor simulate` folder (frames and a contact sheet)");

@@ -203,7 +203,7 @@ int run_simulate(const SimulateOptions& o) {
   return interrupted ? kInterruptedExitCode : kSuccess;
 }
 
-const CommandRegistration registration{
+const CommandRegistration simulate_registration{
     "simulate", [](CLI::App& app) -> std::function<int()> {
       CLI::App* cmd = app.add_subcommand("simulate", "Run the arm-sleeve cloth simulation");
       auto o = std::make_shared<SimulateOptions>();

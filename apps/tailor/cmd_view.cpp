@@ -62,7 +62,7 @@ int run_view(const ViewArgs& args) {
   return kSuccess;
 }
 
-const CommandRegistration registration{
+const CommandRegistration view_registration{
     "view", [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<ViewArgs>();
       CLI::App* command = app.add_subcommand(

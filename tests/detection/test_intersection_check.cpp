@@ -27,7 +27,7 @@ struct Grid {
   FaceArray faces;
   Positions x;
 };
-Grid make_grid(int n) {
+Grid unit_square_grid(int n) {
   Grid g;
   g.x.resize(n * n, 3);
   for (int j = 0; j < n; ++j) {
@@ -65,7 +65,7 @@ IntersectionReport brute_force(const TriangleMesh& mesh, const Positions& x) {
 }
 
 TEST(IntersectionCheck, FlatGridIsClean) {
-  const Grid g = make_grid(12);
+  const Grid g = unit_square_grid(12);
   const TriangleMesh mesh(static_cast<Index>(g.x.rows()), g.faces);
   const auto r = check_intersections(mesh, g.x);
   EXPECT_TRUE(r.intersection_free());
@@ -75,7 +75,7 @@ TEST(IntersectionCheck, FlatGridIsClean) {
 }
 
 TEST(IntersectionCheck, WavyGridIsClean) {
-  Grid g = make_grid(20);
+  Grid g = unit_square_grid(20);
   for (Index v = 0; v < g.x.rows(); ++v)
     g.x(v, 2) = 0.1 * std::sin(9 * g.x(v, 0)) * std::cos(7 * g.x(v, 1));
   const TriangleMesh mesh(static_cast<Index>(g.x.rows()), g.faces);
@@ -84,7 +84,7 @@ TEST(IntersectionCheck, WavyGridIsClean) {
 
 TEST(IntersectionCheck, VertexDraggedOverTheSheet) {
   // Fold the last column of a strip over the sheet, then push one vertex through it.
-  Grid g = make_grid(6);
+  Grid g = unit_square_grid(6);
   const TriangleMesh mesh(static_cast<Index>(g.x.rows()), g.faces);
   Positions x = g.x;
   // Drag a middle vertex flat over a distant part of the sheet: its faces now overlap
@@ -119,7 +119,7 @@ TEST(IntersectionCheck, FoldedFlatFlapIsAdjacentIntersection) {
 }
 
 TEST(IntersectionCheck, ObstacleCrossingAndTouching) {
-  const Grid g = make_grid(8);
+  const Grid g = unit_square_grid(8);
   const TriangleMesh cloth(static_cast<Index>(g.x.rows()), g.faces);
   // A tetrahedron whose apex goes through the sheet, then one that only touches it.
   Positions y(4, 3);
@@ -147,7 +147,7 @@ TEST(IntersectionCheck, ObstacleCrossingAndTouching) {
 }
 
 TEST(IntersectionCheck, BadInputThrows) {
-  const Grid g = make_grid(3);
+  const Grid g = unit_square_grid(3);
   const TriangleMesh mesh(static_cast<Index>(g.x.rows()), g.faces);
   const Positions wrong = g.x.topRows(4);
   EXPECT_THROW(check_intersections(mesh, wrong), InputError);
@@ -160,7 +160,7 @@ TEST(IntersectionCheck, MatchesBruteForceOnRandomMeshes) {
   for (int round = 0; round < rounds; ++round) {
     // A crumpled grid: random displacements large enough to make many intersections,
     // coordinates on a coarse dyadic grid so that coplanar and touching cases are common.
-    Grid g = make_grid(7 + round % 4);
+    Grid g = unit_square_grid(7 + round % 4);
     std::uniform_int_distribution<int> d(-4, 4);
     const double amp = (round % 3 == 0) ? 0.0 : 1.0 / 32.0 * (round % 3);
     for (Index v = 0; v < g.x.rows(); ++v) {
@@ -206,7 +206,7 @@ TEST(IntersectionCheckCli, ExitCodes) {
   const auto dir =
       std::filesystem::temp_directory_path() / ("tailor_check_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  Grid g = make_grid(5);
+  Grid g = unit_square_grid(5);
   write_obj_file(dir / "clean.obj", g.x, g.faces);
   g.x.row(12) << 0.9, 0.9, 0.0;
   write_obj_file(dir / "crossed.obj", g.x, g.faces);

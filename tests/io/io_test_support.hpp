@@ -7,9 +7,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <cstring>
 #include <functional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "tailor/geometry/error.hpp"
@@ -104,6 +106,40 @@ inline void write_triangle(const std::filesystem::path& path) {
   FaceArray f(1, 3);
   f << 0, 1, 2;
   write_mesh(path, x, f);
+}
+
+/// The mesh a read gives, or the message of the InputError it throws.
+using MeshOutcome = std::variant<MeshData, std::string>;
+
+/// Runs `read` (returning a MeshData) and keeps its mesh or its InputError's message.
+template <typename Read>
+MeshOutcome outcome_of(Read read) {
+  try {
+    return read();
+  } catch (const InputError& e) {
+    return std::string(e.what());
+  }
+}
+
+/// Whether `a` and `b` have the same bits (tells -0 from 0, and compares NaNs).
+inline bool bit_equal(double a, double b) {
+  return std::memcmp(&a, &b, sizeof(double)) == 0;
+}
+
+/// Both outcomes are the same error message, or bit-identical meshes.
+inline void expect_same(const MeshOutcome& a, const MeshOutcome& b, const std::string& what) {
+  ASSERT_EQ(a.index(), b.index()) << what;
+  if (const auto* message = std::get_if<std::string>(&a)) {
+    EXPECT_EQ(*message, std::get<std::string>(b)) << what;
+    return;
+  }
+  const MeshData& x = std::get<MeshData>(a);
+  const MeshData& y = std::get<MeshData>(b);
+  ASSERT_EQ(x.vertices.rows(), y.vertices.rows()) << what;
+  for (Index i = 0; i < x.vertices.size(); ++i) {
+    EXPECT_TRUE(bit_equal(x.vertices.data()[i], y.vertices.data()[i])) << what;
+  }
+  EXPECT_EQ(x.faces, y.faces) << what;
 }
 
 /// Exit code and combined output of one run of the built `tailor` CLI.

@@ -23,16 +23,11 @@ void expect_usage_error(const CliResult& r, std::initializer_list<std::string_vi
   expect_contains(r.output, parts);
 }
 
-/// A one-triangle step (t0 = t1).
-void write_triangle(const TempDir& dir) {
-  test::write_bytes(dir / "a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-}
-
 TEST(CliHostileInput, ThreadsAboveTheBoundAreRefused) {
   // `detect --threads 100000` used to segfault in the task arena's shutdown, and
   // `simulate --threads 100000` to start 30,000 threads.
   TempDir dir;
-  write_triangle(dir);
+  test::write_triangle(dir / "a.obj");  // a one-triangle step (t0 = t1)
   const std::string mesh = quoted(dir / "a.obj");
   expect_usage_error(run_cli("detect " + mesh + " " + mesh + " --threads 100000"),
                      {"--threads", "hardware threads"});
@@ -97,7 +92,7 @@ TEST(CliHostileInput, MeshWithoutFacesIsAnError) {
 
 TEST(CliHostileInput, ObserverIdsMustBeIntegersInRange) {
   TempDir dir;
-  write_triangle(dir);
+  test::write_triangle(dir / "a.obj");  // a one-triangle step (t0 = t1)
   const std::string mesh = quoted(dir / "a.obj");
   test::write_bytes(dir / "half.json", R"({"loops": [[0, 2.5, 1]]})");
   expect_usage_error(
@@ -127,7 +122,7 @@ TEST(CliHostileInput, OutputFoldersAreCheckedFirst) {
 
 TEST(CliHostileInput, NegativeMaxPairsIsRefused) {
   TempDir dir;
-  write_triangle(dir);
+  test::write_triangle(dir / "a.obj");  // a one-triangle step (t0 = t1)
   expect_usage_error(run_cli("check-intersections " + quoted(dir / "a.obj") + " --max-pairs -1"),
                      {"--max-pairs"});
 }

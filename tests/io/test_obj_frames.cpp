@@ -21,27 +21,8 @@ namespace {
 using test::TempDir;
 using test::write_bytes;
 
-/// The mesh a read gives, or the message of the InputError it throws.
-using Outcome = std::variant<MeshData, std::string>;
-
-template <typename Read>
-Outcome outcome_of(Read read) {
-  try {
-    return read();
-  } catch (const InputError& e) {
-    return std::string(e.what());
-  }
-}
-
-void expect_same(const Outcome& a, const Outcome& b, const std::string& what) {
-  ASSERT_EQ(a.index(), b.index()) << what;
-  if (const auto* message = std::get_if<std::string>(&a)) {
-    EXPECT_EQ(*message, std::get<std::string>(b)) << what;
-    return;
-  }
-  EXPECT_EQ(std::get<MeshData>(a).vertices, std::get<MeshData>(b).vertices) << what;
-  EXPECT_EQ(std::get<MeshData>(a).faces, std::get<MeshData>(b).faces) << what;
-}
+using test::expect_same;
+using test::outcome_of;
 
 /// Four vertices shifted by `shift`, as `v` lines.
 std::string vertex_lines(double shift, int count = 4) {

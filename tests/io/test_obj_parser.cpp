@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <string>
 #include <variant>
@@ -22,35 +21,13 @@ namespace {
 
 using test::expect_contains;
 
+using test::bit_equal;
+using test::expect_same;
+using Outcome = test::MeshOutcome;
+
 /// The mesh parse_obj() returns, or the message of the InputError it throws.
-using Outcome = std::variant<MeshData, std::string>;
-
 Outcome parse(const std::string& text) {
-  try {
-    return parse_obj(text, "mem.obj");
-  } catch (const InputError& e) {
-    return std::string(e.what());
-  }
-}
-
-bool bit_equal(double a, double b) {
-  return std::memcmp(&a, &b, sizeof(double)) == 0;
-}
-
-/// Both outcomes are the same error message, or bit-identical meshes.
-void expect_same(const Outcome& a, const Outcome& b, const std::string& what) {
-  ASSERT_EQ(a.index(), b.index()) << what;
-  if (const auto* message = std::get_if<std::string>(&a)) {
-    EXPECT_EQ(*message, std::get<std::string>(b)) << what;
-    return;
-  }
-  const MeshData& x = std::get<MeshData>(a);
-  const MeshData& y = std::get<MeshData>(b);
-  ASSERT_EQ(x.vertices.rows(), y.vertices.rows()) << what;
-  for (Index i = 0; i < x.vertices.size(); ++i) {
-    EXPECT_TRUE(bit_equal(x.vertices.data()[i], y.vertices.data()[i])) << what;
-  }
-  EXPECT_EQ(x.faces, y.faces) << what;
+  return test::outcome_of([&] { return parse_obj(text, "mem.obj"); });
 }
 
 const char* kTail = "v 1 0 0\nv 0 1 0\nf 1 2 3\n";

@@ -19,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 /// The InputError message of loading a scene file holding `text` ("" if none was thrown).
-std::string load_error(const std::string& name, const std::string& text) {
+std::string limit_error(const std::string& name, const std::string& text) {
   const fs::path dir = fs::temp_directory_path() / "tailor_test_scene_limits";
   fs::create_directories(dir);
   const fs::path path = dir / name;
@@ -42,7 +42,7 @@ void expect_contains(const std::string& message, std::initializer_list<const cha
 TEST(SceneLimits, DeeplyNestedValueIsAnInputError) {
   // Used to overflow the stack: the error path dumped the whole value.
   const std::string deep = std::string(100'000, '[') + std::string(100'000, ']');
-  const std::string message = load_error("deep.json", R"({"arm": )" + deep + "}");
+  const std::string message = limit_error("deep.json", R"({"arm": )" + deep + "}");
   expect_contains(message, {"deep.json", "nested deeper"});
   EXPECT_LT(message.size(), 200u);
 }
@@ -52,20 +52,20 @@ TEST(SceneLimits, WrongTypeQuotesAShortExcerpt) {
   std::string wide = "[";
   for (int i = 0; i < 100'000; ++i) wide += "1,";
   wide += "1]";
-  const std::string message = load_error("wide.json", R"({"arm": )" + wide + "}");
+  const std::string message = limit_error("wide.json", R"({"arm": )" + wide + "}");
   expect_contains(message, {"wide.json", "'arm' must be an object", "[1, 1, 1"});
   EXPECT_LT(message.size(), 200u);
 }
 
 TEST(SceneLimits, NumberOverflowIsAnInputError) {
   // Used to escape as nlohmann::json::out_of_range, naming no file.
-  expect_contains(load_error("overflow.json", R"({"gravity": [0, 1e400, 0]})"),
+  expect_contains(limit_error("overflow.json", R"({"gravity": [0, 1e400, 0]})"),
                   {"overflow.json", "1e400"});
 }
 
 TEST(SceneLimits, HugeSleeveIsRefusedByTheMemoryBudget) {
   // 16384 × 16384 passed the old 2^28-vertex cap and took over 4 GB in seconds.
-  expect_contains(load_error("sleeve.json", R"({"sleeve": {"rings": 16384, "segments": 16384}})"),
+  expect_contains(limit_error("sleeve.json", R"({"sleeve": {"rings": 16384, "segments": 16384}})"),
                   {"sleeve.json", "16384 × 16384", "memory budget of 4.0 GiB"});
   const Arm arm;
   SleeveParams params;
@@ -76,7 +76,7 @@ TEST(SceneLimits, HugeSleeveIsRefusedByTheMemoryBudget) {
 
 TEST(SceneLimits, HugeArmIsRefusedByTheMemoryBudget) {
   // The arm's resolution had no cap at all (and 100000 × 100000 overflows Index).
-  expect_contains(load_error("arm.json", R"({"arm": {"rings": 100000, "segments": 100000}})"),
+  expect_contains(limit_error("arm.json", R"({"arm": {"rings": 100000, "segments": 100000}})"),
                   {"arm.json", "memory budget"});
   ArmParams params;
   params.cap_rings = 10000;

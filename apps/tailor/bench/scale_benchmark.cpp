@@ -5,7 +5,6 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <memory>
@@ -15,6 +14,7 @@
 #include "tailor/bvh/aabb.hpp"
 #include "tailor/detection/self_collision_detector.hpp"
 #include "tailor/geometry/error.hpp"
+#include "tailor/geometry/stopwatch.hpp"
 #include "tailor/mesh/procedural_meshes.hpp"
 #include "tailor/mesh/procedural_steps.hpp"
 
@@ -97,10 +97,9 @@ ScaleScene make_scene(const std::string& name, Index triangles) {
 // The floor: every face's swept box from x0 and x1, in parallel on the arena's threads.
 double floor_ms(const FaceArray& faces, const Positions& x0, const Positions& x1,
                 std::vector<Aabb>& boxes, tbb::task_arena& arena) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = SteadyClock::now();
   arena.execute([&] { swept_face_boxes(faces, x0, x1, boxes); });
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
+  return milliseconds_since(start);
 }
 
 // Whether a configuration needs another timed run after `runs` runs taking `ms` in all.

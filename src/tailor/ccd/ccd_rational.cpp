@@ -92,10 +92,6 @@ CcdResult to_result(const std::optional<mpq_class>& toi) {
   return r;
 }
 
-bool holds(int sign, bool strict) {
-  return strict ? sign > 0 : sign >= 0;
-}
-
 /// Point p on closed segment ab at root r of squarefree fs (f != 0).
 bool point_on_segment_at(const RationalPoly& fs, RealRoot& r, const PointSegment<RationalPoly>& s) {
   return sign_at_root(fs, r, s.cross.x) == 0 && sign_at_root(fs, r, s.cross.y) == 0 &&

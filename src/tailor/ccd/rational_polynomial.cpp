@@ -287,14 +287,6 @@ int sign_at_root(const RationalPoly& p, RealRoot& root, const RationalPoly& q) {
   }
 }
 
-namespace {
-
-bool holds(int sign, bool strict) {
-  return strict ? sign > 0 : sign >= 0;
-}
-
-}  // namespace
-
 mpq_class root_lower_bound(const RationalPoly& p, RealRoot root, const mpq_class& tolerance) {
   while (!root.exact && root.hi - root.lo > tolerance) refine_root(p, root);
   return root.lo;

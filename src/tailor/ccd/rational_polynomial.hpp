@@ -80,6 +80,12 @@ struct SignCondition {
   bool strict = false;
 };
 
+/// Whether a value of sign `sign` (-1, 0, 1) satisfies a condition that is `strict` (> 0)
+/// or not (>= 0).
+inline bool holds(int sign, bool strict) {
+  return strict ? sign > 0 : sign >= 0;
+}
+
 /// The infimum of {t in [0, 1] : p(t) = 0 and every condition holds} (p may be the zero
 /// polynomial), returned as a rational lower bound within `tolerance` of it; nullopt when
 /// the set is empty.

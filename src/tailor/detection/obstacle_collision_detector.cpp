@@ -15,10 +15,6 @@
 namespace tailor {
 namespace {
 
-Vec3 row(const Positions& x, Index i) {
-  return x.row(i).transpose();
-}
-
 /// Swept boxes of every vertex, edge and face of `mesh` moving x0 -> x1.
 struct SweptBoxes {
   std::vector<Aabb> vertices, edges, faces;
@@ -27,8 +23,8 @@ struct SweptBoxes {
         edges(static_cast<std::size_t>(mesh.num_edges())),
         faces(static_cast<std::size_t>(mesh.num_faces())) {
     for (Index v = 0; v < mesh.num_vertices(); ++v) {
-      vertices[v].extend(row(x0, v));
-      vertices[v].extend(row(x1, v));
+      vertices[v].extend(position(x0, v));
+      vertices[v].extend(position(x1, v));
     }
     bound_edges_and_faces(mesh, vertices, edges, faces);
   }
@@ -114,19 +110,20 @@ std::vector<ObstacleCollision> ObstacleCollisionDetector::detect(const Positions
     CcdResult r;
     if (c.kind == ObstacleCollision::vertex_face) {
       const auto G = m.faces().row(c.obstacle);
-      r = vertex_face_ccd(VertexFaceQuery{row(x0, c.cloth), row(y0, G(0)), row(y0, G(1)),
-                                          row(y0, G(2)), row(x1, c.cloth), row(y1, G(0)),
-                                          row(y1, G(1)), row(y1, G(2))});
+      r = vertex_face_ccd(VertexFaceQuery{
+          position(x0, c.cloth), position(y0, G(0)), position(y0, G(1)), position(y0, G(2)),
+          position(x1, c.cloth), position(y1, G(0)), position(y1, G(1)), position(y1, G(2))});
     } else if (c.kind == ObstacleCollision::face_vertex) {
-      r = vertex_face_ccd(VertexFaceQuery{row(y0, c.obstacle), row(x0, F(c.cloth, 0)),
-                                          row(x0, F(c.cloth, 1)), row(x0, F(c.cloth, 2)),
-                                          row(y1, c.obstacle), row(x1, F(c.cloth, 0)),
-                                          row(x1, F(c.cloth, 1)), row(x1, F(c.cloth, 2))});
+      r = vertex_face_ccd(VertexFaceQuery{
+          position(y0, c.obstacle), position(x0, F(c.cloth, 0)), position(x0, F(c.cloth, 1)),
+          position(x0, F(c.cloth, 2)), position(y1, c.obstacle), position(x1, F(c.cloth, 0)),
+          position(x1, F(c.cloth, 1)), position(x1, F(c.cloth, 2))});
     } else {
       const auto G = m.edges().row(c.obstacle);
-      r = edge_edge_ccd(EdgeEdgeQuery{row(x0, E(c.cloth, 0)), row(x0, E(c.cloth, 1)), row(y0, G(0)),
-                                      row(y0, G(1)), row(x1, E(c.cloth, 0)), row(x1, E(c.cloth, 1)),
-                                      row(y1, G(0)), row(y1, G(1))});
+      r = edge_edge_ccd(EdgeEdgeQuery{position(x0, E(c.cloth, 0)), position(x0, E(c.cloth, 1)),
+                                      position(y0, G(0)), position(y0, G(1)),
+                                      position(x1, E(c.cloth, 0)), position(x1, E(c.cloth, 1)),
+                                      position(y1, G(0)), position(y1, G(1))});
     }
     if (r.hit) {
       hit[i] = 1;

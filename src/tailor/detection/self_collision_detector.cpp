@@ -6,22 +6,17 @@
 #include <chrono>
 
 #include "tailor/bvh/mesh_bvh.hpp"
+#include "tailor/candidates/isolated_set.hpp"
 #include "tailor/candidates/primitive_pair_generator.hpp"
 #include "tailor/culling/bvh_traversal.hpp"
-#include "tailor/candidates/isolated_set.hpp"
 #include "tailor/culling/node_contours.hpp"
 #include "tailor/culling/radial_view_culling.hpp"
 #include "tailor/detection/exact_pair_tests.hpp"
 #include "tailor/geometry/error.hpp"
+#include "tailor/geometry/stopwatch.hpp"
 
 namespace tailor {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double elapsed_ms(Clock::time_point since) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
-}
 
 void check_positions(const TriangleMesh& mesh, const Positions& x, const char* name) {
   if (x.rows() != mesh.num_vertices()) {
@@ -109,9 +104,9 @@ struct SelfCollisionDetector::Impl {
 
   // One round: the pairs the generator holds through the exact CCD.
   void test_round(const Positions& x0, const Positions& x1, DetectionStats& stats) {
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     tester.test(mesh, x0, x1, generator.vertex_face_blocks(), generator.edge_edge_blocks());
-    stats.ccd_ms += elapsed_ms(start);
+    stats.ccd_ms += milliseconds_since(start);
   }
 
   // Low-level culling and exact CCD, in rounds of at most kRoundTrianglePairs CTPs.
@@ -121,18 +116,18 @@ struct SelfCollisionDetector::Impl {
                                   config.adjacency_culling};
     generator.begin_step();
     tester.begin_step();
-    auto start = Clock::now();
+    auto start = SteadyClock::now();
     generator.add_isolated(isolated, x0, x1, options);
-    stats.pair_generation_ms += elapsed_ms(start);
+    stats.pair_generation_ms += milliseconds_since(start);
     test_round(x0, x1, stats);
     traversal.consume([&](std::span<const TrianglePair> block) {
       for (std::size_t first = 0; first < block.size(); first += kRoundTrianglePairs) {
-        start = Clock::now();
+        start = SteadyClock::now();
         generator.clear_pairs();
         generator.add_triangle_pairs(
             block.subspan(first, std::min(kRoundTrianglePairs, block.size() - first)), x0, x1,
             options);
-        stats.pair_generation_ms += elapsed_ms(start);
+        stats.pair_generation_ms += milliseconds_since(start);
         test_round(x0, x1, stats);
       }
     });
@@ -156,16 +151,16 @@ struct SelfCollisionDetector::Impl {
     DetectionResult result;
     DetectionStats& stats = result.stats;
     arena.execute([&] {
-      const auto start = Clock::now();
+      const auto start = SteadyClock::now();
       bvh.refit(x0, x1, config.normal_cones);
-      stats.refit_ms = elapsed_ms(start);
+      stats.refit_ms = milliseconds_since(start);
 
-      auto stage = Clock::now();
+      auto stage = SteadyClock::now();
       traverse(x0, x1);
-      stats.traversal_ms = elapsed_ms(stage);
-      stage = Clock::now();
+      stats.traversal_ms = milliseconds_since(stage);
+      stage = SteadyClock::now();
       radial_view_cull(x0, x1, stats);
-      stats.radial_view_ms = elapsed_ms(stage);
+      stats.radial_view_ms = milliseconds_since(stage);
       record_high_level(stats);
       if (config.keep_candidate_pairs) {
         for (std::span<const TrianglePair> block : traversal.blocks()) {
@@ -175,12 +170,12 @@ struct SelfCollisionDetector::Impl {
       }
 
       low_level_and_ccd(x0, x1, stats);
-      const auto gather = Clock::now();
+      const auto gather = SteadyClock::now();
       result.collisions = tester.take_collisions(mesh);
-      stats.ccd_ms += elapsed_ms(gather);
+      stats.ccd_ms += milliseconds_since(gather);
       stats.vf_colliding = static_cast<std::int64_t>(result.collisions.vertex_face.size());
       stats.ee_colliding = static_cast<std::int64_t>(result.collisions.edge_edge.size());
-      stats.total_ms = elapsed_ms(start);
+      stats.total_ms = milliseconds_since(start);
     });
     return result;
   }

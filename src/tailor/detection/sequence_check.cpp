@@ -10,16 +10,11 @@
 #include <exception>
 
 #include "tailor/geometry/error.hpp"
+#include "tailor/geometry/stopwatch.hpp"
 #include "tailor/io/frame_prefetch.hpp"
 
 namespace tailor {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double milliseconds_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 Index resolve_last_frame(const FrameSequence& frames, const SequenceCheckOptions& options) {
   const Index last = options.last_frame < 0 ? frames.num_frames() - 1 : options.last_frame;
@@ -90,7 +85,7 @@ struct SequenceChecker::Impl {
         mesh(frames.num_vertices(), frames.faces()),
         cloth_reader(frames, options.first_frame, last,
                      resolve_read_ahead(options, frames.num_vertices())) {
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     if (obstacle) obstacle_mesh.emplace(obstacle->num_vertices(), obstacle->faces());
     // Only the static check looks at the obstacle: without it, its frames are not read.
     if (obstacle && options.check_frames) {
@@ -125,7 +120,7 @@ struct SequenceChecker::Impl {
     check.file = frames.path(frame);
     ++summary.frames;
     if (!options.check_frames) return check;
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     check.intersections =
         check_intersections(mesh, cloth, obstacle_mesh ? &*obstacle_mesh : nullptr,
                             obstacle_mesh ? &obstacle_at : nullptr, options.max_pairs);
@@ -153,7 +148,7 @@ struct SequenceChecker::Impl {
   std::optional<StepCheck> advance() {
     const Index k = cloth_reader.next_index() - 1;  // the current frame
     if (k >= last) return std::nullopt;
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     const double wait_before = wait_ms();
     Positions x1 = *cloth_reader.next();                 // k < last: present
     std::optional<Positions> y1;                         // a still obstacle stays in y
@@ -161,7 +156,7 @@ struct SequenceChecker::Impl {
     StepCheck step;
     step.step = k;
     step.read_wait_ms = wait_ms() - wait_before;
-    const auto detect_start = Clock::now();
+    const auto detect_start = SteadyClock::now();
     DetectionResult result = detector->detect(x, x1);
     step.detect_ms = milliseconds_since(detect_start);
     step.collisions = std::move(result.collisions);

@@ -23,4 +23,9 @@ using FaceArray = Eigen::Matrix<Index, Eigen::Dynamic, 3, Eigen::RowMajor>;
 /// Edges, one row of two vertex indices per edge.
 using EdgeArray = Eigen::Matrix<Index, Eigen::Dynamic, 2, Eigen::RowMajor>;
 
+/// The position of vertex `i` (row `i` of `x`) as a column vector.
+inline Vec3 position(const Positions& x, Index i) {
+  return x.row(i).transpose();
+}
+
 }  // namespace tailor

@@ -12,6 +12,7 @@
 #include <chrono>
 
 #include "tailor/geometry/error.hpp"
+#include "tailor/geometry/stopwatch.hpp"
 
 namespace tailor {
 namespace {
@@ -20,11 +21,6 @@ namespace {
 /// frames lasts many of them; a small one is refilled as soon as it gets half empty.
 constexpr std::chrono::microseconds kFirstPause{50};
 constexpr std::chrono::microseconds kLongestPause{2000};
-
-double milliseconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
 
 /// Lets the calling thread run on spare time: when it wakes, the scheduler does not switch
 /// it in at once ahead of the running thread (Linux SCHED_BATCH; elsewhere nothing).
@@ -104,7 +100,7 @@ void FramePrefetcher::read_frames() {
 
 std::optional<Positions> FramePrefetcher::next() {
   if (m_next > m_last) return std::nullopt;
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = SteadyClock::now();
   if (m_read_ahead == 0) {
     Positions frame = m_frames.load(m_next);  // throws without advancing
     ++m_next;

@@ -14,6 +14,7 @@
 #include <numbers>
 
 #include "tailor/geometry/error.hpp"
+#include "tailor/geometry/stopwatch.hpp"
 
 namespace tailor {
 namespace {
@@ -38,12 +39,6 @@ struct Hinge {
 /// stiffness lumps onto their diagonal blocks (evaluate()).
 constexpr bool hinge_opposite_pair(int i, int j) {
   return (i == 2 && j == 3) || (i == 3 && j == 2);
-}
-
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point t) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
 }
 
 double wrap_angle(double a) {
@@ -435,7 +430,7 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0,
                                  pinned_targets.rows(), m.pinned.size()));
   }
   if (m.pinned_dirty) m.update_pinned_lists();
-  const auto start = Clock::now();
+  const auto start = SteadyClock::now();
 
   // Forces and stiffness at x0.
   Positions f = Positions::Zero(m.nv, 3);
@@ -507,15 +502,15 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0,
   }
 
   ClothStepInfo info;
-  info.assemble_ms = ms_since(start);
-  const auto solve_start = Clock::now();
+  info.assemble_ms = milliseconds_since(start);
+  const auto solve_start = SteadyClock::now();
   Eigen::VectorXd dv = m.last_dv;
   const LinearSolveInfo solve = m.linear_solver.solve(A, b, dv);
   info.direct = solve.factorized;
   info.iterations = solve.iterations;
   info.ok = solve.ok;
   if (info.ok) info.ok = dv.allFinite();
-  info.solve_ms = ms_since(solve_start);
+  info.solve_ms = milliseconds_since(solve_start);
   if (info.ok) {
     info.residual = b.norm() > 0 ? (A * dv - b).norm() / b.norm() : 0.0;
     m.last_dv = dv;

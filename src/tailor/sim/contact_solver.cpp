@@ -67,22 +67,13 @@
 #include "tailor/detection/self_collision_detector.hpp"
 #include "tailor/geometry/closest_point.hpp"
 #include "tailor/geometry/error.hpp"
+#include "tailor/geometry/stopwatch.hpp"
 #include "tailor/sim/contact_response.hpp"
 #include "tailor/sim/impact_zones.hpp"
 #include "tailor/sim/proximity_repulsion.hpp"
 
 namespace tailor {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point t) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
-}
-
-Vec3 row(const Positions& x, Index i) {
-  return x.row(i).transpose();
-}
 
 /// Vertex states of the fail-safe; they only move forward.
 enum class VertexState : unsigned char { free = 0, reverted = 1, arm_following = 2 };
@@ -156,7 +147,7 @@ struct ContactSolver::Impl {
 
   ContactStats resolve(const Positions& X0, Positions& x1, const KinematicObstacle& obstacle,
                        double dt) {
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     begin(X0, x1, obstacle, dt);
     ContactStats stats;
     stats.repulsions = repel(x1);
@@ -165,7 +156,7 @@ struct ContactSolver::Impl {
     if (!clean) last_resort(x1, stats);
     finish(x1, stats);
     stats.detection_ms = detect_ms;
-    stats.response_ms = std::max(0.0, ms_since(start) - stats.detection_ms);
+    stats.response_ms = std::max(0.0, milliseconds_since(start) - stats.detection_ms);
     return stats;
   }
 
@@ -190,7 +181,7 @@ struct ContactSolver::Impl {
 
   /// Every collision of the step x0 -> x1 (the certificate of a pass when empty).
   PassCollisions detect(const Positions& x1) {
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     PassCollisions c;
     // The two detectors share nothing but the read-only positions, and neither fills two
     // cores on a sleeve-sized mesh: run side by side (default elbow: the arm's 0.9 ms and
@@ -200,7 +191,7 @@ struct ContactSolver::Impl {
           if (arm != nullptr) c.obstacle = obstacle_detector.detect(*x0, x1);
         },
         [&] { c.self = detector.detect(*x0, x1); });
-    detect_ms += ms_since(start);
+    detect_ms += milliseconds_since(start);
     return c;
   }
 
@@ -276,7 +267,7 @@ struct ContactSolver::Impl {
       for (const auto& g : groups) {
         move_zone_rigidly(
             g, *x0, response.inverse_mass(), pinned, follows,
-            [&](Index v) { return pinned[v] ? row(pinned_x1, v) : arm_target(v); }, x1);
+            [&](Index v) { return pinned[v] ? position(pinned_x1, v) : arm_target(v); }, x1);
       }
     }
     return false;
@@ -387,7 +378,9 @@ struct ContactSolver::Impl {
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
   }
 
-  ContactPoint arm_point(Index v) const { return {-1, row(arm->x0, v), row(arm->x1, v), 0}; }
+  ContactPoint arm_point(Index v) const {
+    return {-1, position(arm->x0, v), position(arm->x1, v), 0};
+  }
 
   Contact self_vf_contact(const VertexFaceCollision& col, const Positions& x1) const {
     Contact c;
@@ -432,13 +425,14 @@ struct ContactSolver::Impl {
   Vec3 arm_target(Index v) {
     if (auto it = arm_targets.find(v); it != arm_targets.end()) return it->second;
     const TriangleMesh& m = *arm->mesh;
-    const Vec3 p = row(*x0, v);
+    const Vec3 p = position(*x0, v);
     double best = std::numeric_limits<double>::infinity();
     Index best_face = -1;
     Vec3 best_bary = Vec3::Zero();
     for (Index f = 0; f < m.num_faces(); ++f) {
       const auto F = m.faces().row(f);
-      const Vec3 a = row(arm->x0, F(0)), b = row(arm->x0, F(1)), c = row(arm->x0, F(2));
+      const Vec3 a = position(arm->x0, F(0)), b = position(arm->x0, F(1)),
+                 c = position(arm->x0, F(2));
       const Vec3 bary = closest_point_barycentric(p, a, b, c);
       const double d = (p - (bary[0] * a + bary[1] * b + bary[2] * c)).squaredNorm();
       if (d < best) {
@@ -451,11 +445,12 @@ struct ContactSolver::Impl {
     if (best_face >= 0) {
       const auto F = m.faces().row(best_face);
       const auto point = [&](const Positions& y) {
-        return Vec3(best_bary[0] * row(y, F(0)) + best_bary[1] * row(y, F(1)) +
-                    best_bary[2] * row(y, F(2)));
+        return Vec3(best_bary[0] * position(y, F(0)) + best_bary[1] * position(y, F(1)) +
+                    best_bary[2] * position(y, F(2)));
       };
       const auto normal = [&](const Positions& y) {
-        Vec3 n = (row(y, F(1)) - row(y, F(0))).cross(row(y, F(2)) - row(y, F(0)));
+        Vec3 n =
+            (position(y, F(1)) - position(y, F(0))).cross(position(y, F(2)) - position(y, F(0)));
         return n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero();
       };
       const Vec3 q0 = point(arm->x0), q1 = point(arm->x1), n0 = normal(arm->x0),

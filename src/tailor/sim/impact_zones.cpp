@@ -6,14 +6,6 @@
 #include <Eigen/SVD>
 
 namespace tailor {
-namespace {
-
-Vec3 row(const Positions& x, Index i) {
-  return x.row(i).transpose();
-}
-
-}  // namespace
-
 void move_zone_rigidly(std::span<const Index> members, const Positions& x0,
                        const Eigen::VectorXd& inverse_mass, std::span<const char> pinned,
                        std::span<const char> follows, const std::function<Vec3(Index)>& target,
@@ -26,14 +18,14 @@ void move_zone_rigidly(std::span<const Index> members, const Positions& x0,
   Vec3 c0 = Vec3::Zero(), c1 = Vec3::Zero();
   if (!kinematic.empty()) {
     for (Index v : kinematic) {
-      c0 += row(x0, v);
+      c0 += position(x0, v);
       c1 += target(v);
     }
     c0 /= static_cast<double>(kinematic.size());
     c1 /= static_cast<double>(kinematic.size());
     if (kinematic.size() >= 2) {
       Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-      for (Index v : kinematic) cov += (target(v) - c1) * (row(x0, v) - c0).transpose();
+      for (Index v : kinematic) cov += (target(v) - c1) * (position(x0, v) - c0).transpose();
       const Eigen::JacobiSVD<Eigen::Matrix3d> svd(cov, Eigen::ComputeFullU | Eigen::ComputeFullV);
       Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
       if ((svd.matrixU() * svd.matrixV().transpose()).determinant() < 0) d(2, 2) = -1;
@@ -41,7 +33,7 @@ void move_zone_rigidly(std::span<const Index> members, const Positions& x0,
     }
     for (Index v : members) {
       if (pinned[v]) continue;
-      const Vec3 moved = follows[v] ? target(v) : Vec3(c1 + rotation * (row(x0, v) - c0));
+      const Vec3 moved = follows[v] ? target(v) : Vec3(c1 + rotation * (position(x0, v) - c0));
       x1.row(v) = moved.transpose();
     }
     return;
@@ -51,8 +43,8 @@ void move_zone_rigidly(std::span<const Index> members, const Positions& x0,
   for (Index v : members) {
     const double mv = 1.0 / inverse_mass[v];
     mass += mv;
-    c0 += mv * row(x0, v);
-    displacement += mv * (row(x1, v) - row(x0, v));
+    c0 += mv * position(x0, v);
+    displacement += mv * (position(x1, v) - position(x0, v));
   }
   c0 /= mass;
   displacement /= mass;
@@ -60,8 +52,8 @@ void move_zone_rigidly(std::span<const Index> members, const Positions& x0,
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
   for (Index v : members) {
     const double mv = 1.0 / inverse_mass[v];
-    const Vec3 r = row(x0, v) - c0;
-    angular += mv * r.cross(row(x1, v) - row(x0, v) - displacement);
+    const Vec3 r = position(x0, v) - c0;
+    angular += mv * r.cross(position(x1, v) - position(x0, v) - displacement);
     inertia += mv * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
   }
   // Pseudo-inverse: a collinear zone has no inertia about its axis.
@@ -73,7 +65,7 @@ void move_zone_rigidly(std::span<const Index> members, const Positions& x0,
   const double angle = omega.norm();
   if (angle > 0) rotation = Eigen::AngleAxisd(angle, omega / angle).toRotationMatrix();
   for (Index v : members)
-    x1.row(v) = (c0 + displacement + rotation * (row(x0, v) - c0)).transpose();
+    x1.row(v) = (c0 + displacement + rotation * (position(x0, v) - c0)).transpose();
 }
 
 }  // namespace tailor

@@ -13,10 +13,6 @@
 namespace tailor {
 namespace {
 
-Vec3 row(const Positions& x, Index i) {
-  return x.row(i).transpose();
-}
-
 Aabb point_box(const Vec3& p, double inflate) {
   Aabb box;
   box.extend(p);
@@ -32,7 +28,8 @@ struct EndBoxes {
       : vertices(static_cast<std::size_t>(mesh.num_vertices())),
         edges(static_cast<std::size_t>(mesh.num_edges())),
         faces(static_cast<std::size_t>(mesh.num_faces())) {
-    for (Index v = 0; v < mesh.num_vertices(); ++v) vertices[v] = point_box(row(x, v), inflate);
+    for (Index v = 0; v < mesh.num_vertices(); ++v)
+      vertices[v] = point_box(position(x, v), inflate);
     bound_edges_and_faces(mesh, vertices, edges, faces);
   }
 };
@@ -67,13 +64,13 @@ std::int64_t ProximityRepulsion::repel_obstacle(const Positions& x0, Positions& 
   std::int64_t count = 0;
   for (std::size_t i = 0; i < pairs.size();) {
     const Index v = pairs[i].first;
-    const Vec3 p = row(x1, v);
+    const Vec3 p = position(x1, v);
     double best = std::numeric_limits<double>::infinity();
     Index best_face = -1;
     Vec3 best_bary = Vec3::Zero();
     for (; i < pairs.size() && pairs[i].first == v; ++i) {
       const auto F = m.faces().row(pairs[i].second);
-      const Vec3 a = row(y1, F(0)), b = row(y1, F(1)), c = row(y1, F(2));
+      const Vec3 a = position(y1, F(0)), b = position(y1, F(1)), c = position(y1, F(2));
       const Vec3 bary = closest_point_barycentric(p, a, b, c);
       const double d = (p - (bary[0] * a + bary[1] * b + bary[2] * c)).norm();
       if (d < best) {
@@ -84,10 +81,10 @@ std::int64_t ProximityRepulsion::repel_obstacle(const Positions& x0, Positions& 
     }
     if (best_face < 0 || !(best < h)) continue;
     const auto F = m.faces().row(best_face);
-    const Vec3 a1 = row(y1, F(0)), b1 = row(y1, F(1)), c1 = row(y1, F(2));
+    const Vec3 a1 = position(y1, F(0)), b1 = position(y1, F(1)), c1 = position(y1, F(2));
     const Vec3 q1 = best_bary[0] * a1 + best_bary[1] * b1 + best_bary[2] * c1;
-    const Vec3 q0 =
-        best_bary[0] * row(y0, F(0)) + best_bary[1] * row(y0, F(1)) + best_bary[2] * row(y0, F(2));
+    const Vec3 q0 = best_bary[0] * position(y0, F(0)) + best_bary[1] * position(y0, F(1)) +
+                    best_bary[2] * position(y0, F(2));
     Vec3 n = (b1 - a1).cross(c1 - a1);
     if (!(n.norm() > 0)) continue;
     n.normalize();
@@ -98,7 +95,7 @@ std::int64_t ProximityRepulsion::repel_obstacle(const Positions& x0, Positions& 
     if (side > 0 && best > 0) dir = (p - q1) / best;
     const double dn = side > 0 ? h - best : h - side;
     Vec3 x = p + dn * dir;
-    const Vec3 rel = (x - row(x0, v)) - (q1 - q0);
+    const Vec3 rel = (x - position(x0, v)) - (q1 - q0);
     const Vec3 tangential = rel - rel.dot(dir) * dir;
     const double tl = tangential.norm();
     if (tl > 0 && friction > 0) x -= std::min(1.0, friction * dn / tl) * tangential;

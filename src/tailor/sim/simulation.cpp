@@ -12,13 +12,12 @@
 #include "tailor/culling/radial_view.hpp"
 #include "tailor/detection/intersection_check.hpp"
 #include "tailor/geometry/error.hpp"
+#include "tailor/geometry/stopwatch.hpp"
 #include "tailor/sim/arm_collision.hpp"
 #include "tailor/sim/strain_limiter.hpp"
 
 namespace tailor {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 /// Cloth faces are kept this many contact thicknesses outside the implicit arm (the
 /// skinned mesh sticks out of it by up to about 1.3 mm, see Arm).
@@ -32,10 +31,6 @@ constexpr double kArmContactStiffness = 1e3;
 constexpr int kStrainSweeps = 400;
 /// Strain-limiting sweeps between two passes of the contact solver.
 constexpr int kContactStrainSweeps = 20;
-
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 double longest_edge(const TriangleMesh& mesh, const Positions& x) {
   double longest = 0;
@@ -198,7 +193,7 @@ struct Simulation::Impl {
     // Times from the step count, so long runs do not accumulate rounding.
     const double t1 = static_cast<double>(step_index + 1) * h;
     record.time = t1;
-    const auto step_start = Clock::now();
+    const auto step_start = SteadyClock::now();
 
     const ArmPose pose1 = scene.gesture().pose_at(t1);
     const ArmSkeleton skeleton1 = arm.skeleton(pose1);
@@ -219,7 +214,7 @@ struct Simulation::Impl {
     record.arm_contacts = finish_arm_contacts(planes, x1, released, normal_forces);
     // Strain limit and the implicit arm together (alternating projections); the
     // projection carries no friction here: friction acted in the solve.
-    const auto strain_start = Clock::now();
+    const auto strain_start = SteadyClock::now();
     arm_cache.reset(x1.rows());
     record.strain_limit = limiter.apply(x1, kStrainSweeps, [&](Positions& x_end) {
       const ArmCollisionStats arm_stats = project_out_of_arm(
@@ -228,8 +223,8 @@ struct Simulation::Impl {
       record.arm_projected += arm_stats.projected;
       return arm_stats.projected;
     });
-    record.strain_ms = ms_since(strain_start);
-    record.forces_solve_ms = ms_since(step_start);
+    record.strain_ms = milliseconds_since(strain_start);
+    record.forces_solve_ms = milliseconds_since(step_start);
 
     if (contact) {
       // Strain limiting interleaved with the contact passes (see ContactSolver).
@@ -257,15 +252,15 @@ struct Simulation::Impl {
 
     if (options.check_intersections ||
         (options.check_frames && substep_index + 1 == config.substeps)) {
-      const auto check_start = Clock::now();
+      const auto check_start = SteadyClock::now();
       const IntersectionReport report =
           check_intersections(*scene.sleeve().mesh, x, &arm.mesh(), &y);
       record.checked = true;
       record.self_intersections = report.self_intersections + report.adjacent_intersections;
       record.obstacle_intersections = report.obstacle_intersections;
-      record.check_ms = ms_since(check_start);
+      record.check_ms = milliseconds_since(check_start);
     }
-    record.step_ms = ms_since(step_start);
+    record.step_ms = milliseconds_since(step_start);
     ++step_index;
     accumulate(record);
     records.push_back(std::move(record));
@@ -309,12 +304,12 @@ Simulation& Simulation::operator=(Simulation&&) noexcept = default;
 
 const std::vector<StepRecord>& Simulation::step_frame() {
   Impl& m = *m_impl;
-  const auto start = Clock::now();
+  const auto start = SteadyClock::now();
   m.records.clear();
   for (int s = 0; s < m.scene.config().substeps; ++s) m.substep(s);
   ++m.frame;
   m.totals.frames = m.frame;
-  m.totals.wall_seconds += ms_since(start) / 1000.0;
+  m.totals.wall_seconds += milliseconds_since(start) / 1000.0;
   return m.records;
 }
 
