@@ -201,16 +201,19 @@ std::vector<mpq_class> bernstein_on(const RationalPoly& q, const mpq_class& lo,
     mpq_mul(a[i].get_mpq_t(), a[i].get_mpq_t(), wp.get_mpq_t());
   }
   // Monomial to Bernstein: b_k = sum_{i<=k} C(k,i)/C(n,i) a_i.
+  std::vector<mpz_class> binom_n(n + 1);
+  for (int i = 0; i <= n; ++i) {
+    mpz_bin_uiui(binom_n[i].get_mpz_t(), static_cast<unsigned long>(n),
+                 static_cast<unsigned long>(i));
+  }
   std::vector<mpq_class> b(n + 1);
-  mpz_class binom_k, binom_n;
+  mpz_class binom_k;
   for (int k = 0; k <= n; ++k) {
     for (int i = 0; i <= k; ++i) {
       mpz_bin_uiui(binom_k.get_mpz_t(), static_cast<unsigned long>(k),
                    static_cast<unsigned long>(i));
-      mpz_bin_uiui(binom_n.get_mpz_t(), static_cast<unsigned long>(n),
-                   static_cast<unsigned long>(i));
       mpq_set_num(scratch.get_mpq_t(), binom_k.get_mpz_t());
-      mpq_set_den(scratch.get_mpq_t(), binom_n.get_mpz_t());
+      mpq_set_den(scratch.get_mpq_t(), binom_n[i].get_mpz_t());
       mpq_canonicalize(scratch.get_mpq_t());
       mpq_mul(scratch.get_mpq_t(), scratch.get_mpq_t(), a[i].get_mpq_t());
       mpq_add(b[k].get_mpq_t(), b[k].get_mpq_t(), scratch.get_mpq_t());

@@ -160,7 +160,7 @@ bool triangles_intersect_except_shared_edge(const Triangle& t, const Triangle& u
 
 TrianglePairVerdict classify_face_pair(const Positions& x, const std::array<Index, 3>& f,
                                        const std::array<Index, 3>& g) {
-  const auto point = [&x](Index v) -> Vec3 { return x.row(v).transpose(); };
+  const auto point = [&x](Index v) { return position(x, v); };
   // Which corners of f appear in g, and where.
   std::array<int, 3> in_g{-1, -1, -1};
   int shared = 0;

@@ -47,10 +47,6 @@ double wrap_angle(double a) {
   return a;
 }
 
-Vec3 row3(const Positions& x, Index i) {
-  return x.row(i).transpose();
-}
-
 }  // namespace
 
 double dihedral_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
@@ -153,7 +149,7 @@ struct ClothModel::Impl {
       const std::array<Index, 3> vid{faces(t, 0), faces(t, 1), faces(t, 2)};
       Vec3 wu = Vec3::Zero(), wv = Vec3::Zero();
       for (int i = 0; i < 3; ++i) {
-        const Vec3 p = row3(x, vid[i]);
+        const Vec3 p = position(x, vid[i]);
         wu += r.cu[i] * p;
         wv += r.cv[i] * p;
       }
@@ -193,8 +189,8 @@ struct ClothModel::Impl {
       Eigen::Matrix<double, 12, 1> grad;
       for (std::size_t hi = 0; hi < hinges.size(); ++hi) {
         const Hinge& h = hinges[hi];
-        const double angle = dihedral_angle(row3(x, h.v[0]), row3(x, h.v[1]), row3(x, h.v[2]),
-                                            row3(x, h.v[3]), &grad);
+        const double angle = dihedral_angle(position(x, h.v[0]), position(x, h.v[1]),
+                                            position(x, h.v[2]), position(x, h.v[3]), &grad);
         const double d = wrap_angle(angle - h.rest_angle);
         const double k = kb * h.weight;
         energy += 0.5 * k * d * d;
@@ -265,8 +261,8 @@ ClothModel::ClothModel(const TriangleMesh& mesh, const Positions& rest,
   m.face_rest.resize(static_cast<std::size_t>(nf));
   std::vector<double> face_area(static_cast<std::size_t>(nf));
   for (Index t = 0; t < nf; ++t) {
-    const Vec3 p0 = row3(rest, m.faces(t, 0)), p1 = row3(rest, m.faces(t, 1)),
-               p2 = row3(rest, m.faces(t, 2));
+    const Vec3 p0 = position(rest, m.faces(t, 0)), p1 = position(rest, m.faces(t, 1)),
+               p2 = position(rest, m.faces(t, 2));
     const Vec3 n = (p1 - p0).cross(p2 - p0);
     const double area = 0.5 * n.norm();
     if (!(area > 1e-14 * std::max(1.0, (p1 - p0).squaredNorm()))) {
@@ -307,11 +303,11 @@ ClothModel::ClothModel(const TriangleMesh& mesh, const Positions& rest,
     }
     Hinge h;
     h.v = {a, b, third(f0), third(f1)};
-    const double len2 = (row3(rest, a) - row3(rest, b)).squaredNorm();
+    const double len2 = (position(rest, a) - position(rest, b)).squaredNorm();
     h.weight = 3 * len2 /
                (face_area[static_cast<std::size_t>(f0)] + face_area[static_cast<std::size_t>(f1)]);
-    h.rest_angle =
-        dihedral_angle(row3(rest, a), row3(rest, b), row3(rest, h.v[2]), row3(rest, h.v[3]));
+    h.rest_angle = dihedral_angle(position(rest, a), position(rest, b), position(rest, h.v[2]),
+                                  position(rest, h.v[3]));
     m.hinges.push_back(h);
   }
 
@@ -401,7 +397,7 @@ ClothEnergy ClothModel::energy(const Positions& x, const Positions& v, const Vec
   const Impl& m = *m_impl;
   for (Index i = 0; i < m.nv; ++i) {
     e.kinetic += 0.5 * m.masses[i] * v.row(i).squaredNorm();
-    e.gravity -= m.masses[i] * gravity.dot(row3(x, i));
+    e.gravity -= m.masses[i] * gravity.dot(position(x, i));
   }
   // Split membrane and bending by evaluating with bending switched off.
   Impl membrane_only;
@@ -465,7 +461,7 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0,
   for (const ContactPlane& c : contacts) {
     const Index i = c.vertex;
     if (i < 0 || i >= m.nv || m.is_pinned[static_cast<std::size_t>(i)] != 0) continue;
-    const Vec3 xi = row3(x0, i), vi = row3(v0, i);
+    const Vec3 xi = position(x0, i), vi = position(v0, i);
     Vec3 rhs = h *
                (-c.stiffness * c.normal.dot(xi - c.point) - h * c.stiffness * c.normal.dot(vi)) *
                c.normal;
