@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <iostream>
 #include <random>
 
 #include "tailor/bvh/batch_bounds.hpp"
@@ -76,8 +77,10 @@ TEST(BatchBounds, BeyondTheFloatRangeClampAndKeepOverlaps) {
   EXPECT_LE(bounds.low[0][1], 0.0f);
 }
 
-TEST(BatchBounds, TwoAndFourLanePathsAgree) {
+TEST(BatchBounds, TwoFourAndEightLanePathsAgree) {
   if (!detail::direction_mask_has_four_lanes()) GTEST_SKIP() << "no AVX2 on this processor";
+  const bool eight = detail::direction_mask_has_eight_lanes();
+  if (!eight) std::cout << "no AVX-512 on this processor: eight-lane path not compared\n";
   std::mt19937_64 rng(8);
   std::uniform_int_distribution<int> count_of(1, MovingTriangleBatch::kCapacity);
   std::vector<std::array<Vec3, 6>> corners;
@@ -85,13 +88,17 @@ TEST(BatchBounds, TwoAndFourLanePathsAgree) {
     const int count = count_of(rng);
     const MovingTriangleBatch batch =
         random_batch(rng, count, std::ldexp(1.0, (trial % 60) * 20 - 600), corners);
-    BatchBounds two, four;
+    BatchBounds two, four, eight_lanes;
     detail::batch_bounds_two_lanes(batch, two);
     detail::batch_bounds_four_lanes(batch, four);
+    if (eight) detail::batch_bounds_eight_lanes(batch, eight_lanes);
     for (int k = 0; k < 3; ++k) {
       for (int i = 0; i < batch.padded_count(); ++i) {
         ASSERT_EQ(two.low[k][i], four.low[k][i]) << "trial " << trial;
         ASSERT_EQ(two.high[k][i], four.high[k][i]) << "trial " << trial;
+        if (!eight) continue;
+        ASSERT_EQ(two.low[k][i], eight_lanes.low[k][i]) << "trial " << trial;
+        ASSERT_EQ(two.high[k][i], eight_lanes.high[k][i]) << "trial " << trial;
       }
     }
   }

@@ -10,6 +10,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <iostream>
 #include <random>
 
 #include "tailor/bvh/direction_mask.hpp"
@@ -131,11 +132,13 @@ TEST(DirectionMask, DegenerateOverflowingOrBatchedTrianglesAreHandled) {
   EXPECT_EQ(both, up & direction_mask(zero, y, x, zero, y, x));
 }
 
-TEST(DirectionMask, TwoAndFourLanePathsAgreeBitForBit) {
+TEST(DirectionMask, TwoFourAndEightLanePathsAgreeBitForBit) {
   // Batches of 1-16 random triangles over many scales and motions (near-degenerate and
-  // overflowing ones too): the SSE2 and AVX2 paths of the dispatch give the same mask,
-  // which is the and of the single-triangle masks.
+  // overflowing ones too): the SSE2, AVX2 and AVX-512 paths of the dispatch give the same
+  // mask, which is the and of the single-triangle masks.
   if (!detail::direction_mask_has_four_lanes()) GTEST_SKIP() << "no AVX2 on this processor";
+  const bool eight = detail::direction_mask_has_eight_lanes();
+  if (!eight) std::cout << "no AVX-512 on this processor: eight-lane path not compared\n";
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> uniform(-1, 1);
   std::uniform_int_distribution<int> count_of(1, MovingTriangleBatch::kCapacity);
@@ -163,6 +166,9 @@ TEST(DirectionMask, TwoAndFourLanePathsAgreeBitForBit) {
     batch.pad();
     const DirectionMask two = detail::direction_mask_two_lanes(batch);
     ASSERT_EQ(two, detail::direction_mask_four_lanes(batch)) << "trial " << trial;
+    if (eight) {
+      ASSERT_EQ(two, detail::direction_mask_eight_lanes(batch)) << "trial " << trial;
+    }
     ASSERT_EQ(two, expected) << "trial " << trial;
     nonzero += two != 0;
   }

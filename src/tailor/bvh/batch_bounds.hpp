@@ -24,6 +24,8 @@ namespace detail {
 /// direction_mask_has_four_lanes()); exposed so that a test can check they agree.
 void batch_bounds_two_lanes(const MovingTriangleBatch& batch, BatchBounds& bounds);
 void batch_bounds_four_lanes(const MovingTriangleBatch& batch, BatchBounds& bounds);
+/// Eight at a time (AVX-512 F and DQ: call only when direction_mask_has_eight_lanes()).
+void batch_bounds_eight_lanes(const MovingTriangleBatch& batch, BatchBounds& bounds);
 }  // namespace detail
 
 }  // namespace tailor

@@ -99,6 +99,12 @@ namespace detail {
 DirectionMask direction_mask_two_lanes(const MovingTriangleBatch& batch);
 DirectionMask direction_mask_four_lanes(const MovingTriangleBatch& batch);
 bool direction_mask_has_four_lanes();
+/// Eight lanes at a time (AVX-512 F and DQ: call only when
+/// direction_mask_has_eight_lanes()); direction_mask() prefers it where it runs. (The
+/// refit of the crumpling cloth of 1M triangles, one thread, on an AMD Zen 5: 18.8 ms
+/// with four lanes, 16.5 ms with eight lanes for the masks and the leaf boxes.)
+DirectionMask direction_mask_eight_lanes(const MovingTriangleBatch& batch);
+bool direction_mask_has_eight_lanes();
 }  // namespace detail
 
 /// The mask of one triangle moving from (a0, b0, c0) to (a1, b1, c1).

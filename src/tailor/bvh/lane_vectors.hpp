@@ -3,8 +3,8 @@
 /// GCC/Clang vectors of W doubles for the lane kernels over a MovingTriangleBatch
 /// (direction_mask.cpp): W = 2 is the width of SSE2 (wider generic vectors
 /// are lowered lane by lane there); W = 4 is used only inside functions built for AVX2,
-/// chosen at run time (has_avx2()), where it maps to ymm registers. Internal to the bvh
-/// module.
+/// chosen at run time (has_avx2()), where it maps to ymm registers, and W = 8 only inside
+/// functions built for AVX-512 (has_avx512(): zmm registers). Internal to the bvh module.
 
 #include <cstdint>
 #include <cstring>
@@ -33,6 +33,11 @@ struct Vectors<4> {
   using Lanes = double __attribute__((vector_size(32)));
   using Bits = std::int64_t __attribute__((vector_size(32)));
 };
+template <>
+struct Vectors<8> {
+  using Lanes = double __attribute__((vector_size(64)));
+  using Bits = std::int64_t __attribute__((vector_size(64)));
+};
 
 template <int W>
 [[gnu::always_inline]] inline typename Vectors<W>::Lanes load(const double* p) {
@@ -49,6 +54,12 @@ template <class Lanes>
 inline bool has_avx2() {
   static const bool avx2 = __builtin_cpu_supports("avx2");
   return avx2;
+}
+/// Whether it runs the AVX-512 kernels (F and DQ, with AVX2; checked once).
+inline bool has_avx512() {
+  static const bool avx512 =
+      __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") && has_avx2();
+  return avx512;
 }
 
 }  // namespace tailor::lanes
