@@ -1,13 +1,13 @@
 // Batch bounds: every lane's bounds hold its six corners and equal the rounding of
 // float_box.hpp (within 3 float ulps), beyond the float range they clamp and keep every
-// overlap, padding lanes change nothing, and the two- and four-lane paths agree.
+// overlap, padding lanes change nothing, and the two-, four- and eight-lane paths agree.
 
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cmath>
-#include <limits>
 #include <iostream>
+#include <limits>
 #include <random>
 
 #include "tailor/bvh/batch_bounds.hpp"

@@ -8,6 +8,7 @@
 
 #include "tailor/bvh/batch_bounds.hpp"
 #include "tailor/bvh/batch_gather.hpp"
+#include "tailor/bvh/group_boxes.hpp"
 
 namespace tailor {
 namespace {
@@ -179,24 +180,16 @@ void MeshBvh::refit_group(const Group& group, const Positions& x0, const Positio
   BatchBounds bounds;
   batch_bounds(batch, bounds);
   // The group's nodes are the id range [root, root + 2·count - 1) (pre-order): its leaves
-  // in increasing id order are the batch's lanes; its inner nodes are joined children
-  // first (decreasing id).
-  int lane = 0;
-  for (std::uint32_t bits = group.leaf_bits; bits != 0; bits &= bits - 1, ++lane) {
-    FloatBox& box = m_nodes[group.root + std::countr_zero(bits)].box;
-    for (int k = 0; k < 3; ++k) box.min[k] = bounds.low[k][lane], box.max[k] = bounds.high[k][lane];
-  }
-  const std::uint32_t inner = ~group.leaf_bits & ((std::uint32_t{1} << (2 * count - 1)) - 1);
-  for (std::uint32_t bits = inner; bits != 0;
-       bits &= ~(std::uint32_t{1} << (31 - std::countl_zero(bits)))) {
-    join_children(group.root + 31 - std::countl_zero(bits));
-  }
+  // in increasing id order are the batch's lanes.
+  write_group_boxes(bounds, group.leaf_bits, static_cast<int>(count), &m_nodes[group.root].box,
+                    sizeof(Node));
   if (with_directions) m_masks[mask_index(group.root)] = tailor::direction_mask(batch);
 }
 
 void MeshBvh::join_children(Index node) {
-  // Component by component: the children were just written one float at a time, and a
-  // wider load of them would wait for those stores (a failed store-to-load forward).
+  // Component by component: a child that is a merge node was just written a float at a
+  // time, and a wider load of it would wait for those stores (a failed store-to-load
+  // forward).
   Node& record = m_nodes[node];
   const FloatBox& a = m_nodes[node + 1].box;
   const FloatBox& b = m_nodes[record.right_or_face].box;

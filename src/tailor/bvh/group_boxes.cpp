@@ -1,0 +1,97 @@
+#include "tailor/bvh/group_boxes.hpp"
+
+#include <immintrin.h>
+
+#include "tailor/bvh/lane_vectors.hpp"
+
+namespace tailor {
+namespace {
+
+static_assert(sizeof(FloatBox) == 6 * sizeof(float), "a box is six contiguous floats");
+
+FloatBox& box_at(FloatBox* first, std::size_t stride, int node) {
+  return *reinterpret_cast<FloatBox*>(reinterpret_cast<char*>(first) +
+                                      stride * static_cast<std::size_t>(node));
+}
+
+// A box as one vector (min x, y, z, -max x, y, z, -, -): the union of two is their
+// minimum. Each record's 32 bytes are written at once, the eight after the box with the
+// value they held.
+[[gnu::target("avx2")]] void one_vector_per_box(const BatchBounds& bounds, std::uint32_t leaf_bits,
+                                                int count, FloatBox* first, std::size_t stride) {
+  __m256 pending[MovingTriangleBatch::kCapacity];
+  int top = 0;
+  const __m256 negate_max = _mm256_setr_ps(0.0f, 0.0f, 0.0f, -0.0f, -0.0f, -0.0f, 0.0f, 0.0f);
+  int lane = count - 1;
+  for (int node = 2 * count - 2; node >= 0; --node) {
+    __m256 box;
+    if ((leaf_bits >> node) & 1) {
+      box = _mm256_setr_ps(bounds.low[0][lane], bounds.low[1][lane], bounds.low[2][lane],
+                           -bounds.high[0][lane], -bounds.high[1][lane], -bounds.high[2][lane],
+                           0.0f, 0.0f);
+      --lane;
+    } else {
+      box = _mm256_min_ps(pending[top - 1], pending[top - 2]);
+      top -= 2;
+    }
+    pending[top++] = box;
+    auto* record = reinterpret_cast<float*>(&box_at(first, stride, node));
+    _mm256_storeu_ps(
+        record, _mm256_blend_ps(_mm256_xor_ps(box, negate_max), _mm256_loadu_ps(record), 0xc0));
+  }
+}
+
+}  // namespace
+
+namespace detail {
+
+void write_group_boxes_sse2(const BatchBounds& bounds, std::uint32_t leaf_bits, int count,
+                            FloatBox* first, std::size_t stride) {
+  // Two vectors per box, (min x, y, z, -) and (-max x, y, z, -): a union is two minima.
+  __m128 pending_min[MovingTriangleBatch::kCapacity], pending_max[MovingTriangleBatch::kCapacity];
+  int top = 0;
+  int lane = count - 1;
+  for (int node = 2 * count - 2; node >= 0; --node) {
+    __m128 low, negated_high;
+    if ((leaf_bits >> node) & 1) {
+      low = _mm_setr_ps(bounds.low[0][lane], bounds.low[1][lane], bounds.low[2][lane], 0.0f);
+      negated_high =
+          _mm_setr_ps(-bounds.high[0][lane], -bounds.high[1][lane], -bounds.high[2][lane], 0.0f);
+      --lane;
+    } else {
+      low = _mm_min_ps(pending_min[top - 1], pending_min[top - 2]);
+      negated_high = _mm_min_ps(pending_max[top - 1], pending_max[top - 2]);
+      top -= 2;
+    }
+    pending_min[top] = low, pending_max[top] = negated_high, ++top;
+    const __m128 high = _mm_xor_ps(negated_high, _mm_set1_ps(-0.0f));
+    // (min x, y, z, max x) and (max y, z): the six floats of the box and nothing more.
+    const __m128 z_x = _mm_shuffle_ps(low, high, _MM_SHUFFLE(0, 0, 2, 2));
+    auto* box = reinterpret_cast<float*>(&box_at(first, stride, node));
+    _mm_storeu_ps(box, _mm_shuffle_ps(low, z_x, _MM_SHUFFLE(2, 0, 1, 0)));
+    _mm_storel_pi(reinterpret_cast<__m64*>(box + 4),
+                  _mm_shuffle_ps(high, high, _MM_SHUFFLE(3, 3, 2, 1)));
+  }
+}
+
+void write_group_boxes_avx2(const BatchBounds& bounds, std::uint32_t leaf_bits, int count,
+                            FloatBox* first, std::size_t stride) {
+  one_vector_per_box(bounds, leaf_bits, count, first, stride);
+}
+
+bool group_boxes_have_avx2() {
+  return lanes::has_avx2();
+}
+
+}  // namespace detail
+
+void write_group_boxes(const BatchBounds& bounds, std::uint32_t leaf_bits, int count,
+                       FloatBox* first, std::size_t stride) {
+  if (lanes::has_avx2()) {
+    detail::write_group_boxes_avx2(bounds, leaf_bits, count, first, stride);
+  } else {
+    detail::write_group_boxes_sse2(bounds, leaf_bits, count, first, stride);
+  }
+}
+
+}  // namespace tailor
