@@ -181,6 +181,7 @@ void MeshBvh::refit_group(const Group& group, const Positions& x0, const Positio
   batch_bounds(batch, bounds);
   // The group's nodes are the id range [root, root + 2·count - 1) (pre-order): its leaves
   // in increasing id order are the batch's lanes.
+  static_assert(sizeof(Node) >= 32, "write_group_boxes() writes 32 bytes of each record");
   write_group_boxes(bounds, group.leaf_bits, static_cast<int>(count), &m_nodes[group.root].box,
                     sizeof(Node));
   if (with_directions) m_masks[mask_index(group.root)] = tailor::direction_mask(batch);
