@@ -79,10 +79,6 @@ void write_group_boxes_avx2(const BatchBounds& bounds, std::uint32_t leaf_bits, 
   one_vector_per_box(bounds, leaf_bits, count, first, stride);
 }
 
-bool group_boxes_have_avx2() {
-  return lanes::has_avx2();
-}
-
 }  // namespace detail
 
 void write_group_boxes(const BatchBounds& bounds, std::uint32_t leaf_bits, int count,
