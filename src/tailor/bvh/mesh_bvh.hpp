@@ -97,9 +97,14 @@ class MeshBvh {
   struct Group {
     Index root, first_leaf;  // its leaves are first_leaf, first_leaf + 1, ... (leaf order)
     Index index;             // its position in m_groups
+    Index mask_slot;         // mask_index(root), so that the refit counts no bits
     // Bit i: node root + i is a leaf (a group has at most 2·kGroupFaces - 3 nodes), so
     // that the refit visits leaves and inner nodes without a branch per node.
     std::uint32_t leaf_bits;
+  };
+  // A merge node with the mask slots of itself and its two children.
+  struct Merge {
+    Index node, slot, left_slot, right_slot;
   };
   // The work of one parallel task: a range of groups, then a range of merge nodes
   // (visited in decreasing id order, children first).
@@ -108,7 +113,7 @@ class MeshBvh {
   };
   void refit_group(const Group& group, const Positions& x0, const Positions& x1,
                    bool with_directions);
-  void merge(Index node, bool with_directions);
+  void merge(const Merge& merge, bool with_directions);
   // Sets an inner node's box to the union of its children's.
   void join_children(Index node);
 
@@ -120,9 +125,9 @@ class MeshBvh {
   std::vector<DirectionMask> m_masks;
   std::vector<std::array<Index, 3>> m_leaf_vertices;  // in leaf order, for a coherent refit
   std::vector<Group> m_groups;                        // increasing root id
-  std::vector<Index> m_merge_nodes;                   // increasing id
+  std::vector<Merge> m_merges;                        // increasing node id
   std::vector<Task> m_tasks;                          // disjoint subtrees
-  std::vector<Index> m_top_merges;                    // merge nodes above the tasks, decreasing
+  std::vector<Index> m_top_merges;  // positions in m_merges of those above the tasks, decreasing
 };
 
 }  // namespace tailor
