@@ -78,8 +78,8 @@ TEST(BatchBounds, BeyondTheFloatRangeClampAndKeepOverlaps) {
 }
 
 TEST(BatchBounds, TwoFourAndEightLanePathsAgree) {
-  if (!detail::direction_mask_has_four_lanes()) GTEST_SKIP() << "no AVX2 on this processor";
-  const bool eight = detail::direction_mask_has_eight_lanes();
+  if (!detail::direction_mask_has_avx2()) GTEST_SKIP() << "no AVX2 on this processor";
+  const bool eight = detail::direction_mask_has_avx512();
   if (!eight) std::cout << "no AVX-512 on this processor: eight-lane path not compared\n";
   std::mt19937_64 rng(8);
   std::uniform_int_distribution<int> count_of(1, MovingTriangleBatch::kCapacity);

@@ -14,7 +14,7 @@ namespace tailor {
 namespace {
 
 TEST(BatchGather, FourLanesEqualAddingOneByOneAndPadding) {
-  if (!detail::direction_mask_has_four_lanes()) GTEST_SKIP() << "no AVX2 on this processor";
+  if (!detail::direction_mask_has_avx2()) GTEST_SKIP() << "no AVX2 on this processor";
   std::mt19937_64 rng(3);
   const Index vertices = 50;
   // Exactly 3 doubles per vertex: the last vertex's masked load ends the array.

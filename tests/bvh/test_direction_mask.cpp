@@ -1,7 +1,8 @@
 // Direction masks: every bit they set is true for the whole step (checked exactly: n(t)·d is
 // a quadratic in t with rational coefficients, positive on [0, 1] or not), on random,
-// near-degenerate, tiny and huge triangles; and they are not vacuous (a static triangle
-// gets every direction clearly on its side).
+// near-degenerate, tiny and huge triangles (at and beyond the ends of the float range the
+// masks are computed in), and normals a hair from perpendicular to a direction; and they
+// are not vacuous (a static triangle gets every direction clearly on its side).
 
 #include "support/sanitized.hpp"
 #include <gmpxx.h>
@@ -11,6 +12,7 @@
 #include <bit>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <random>
 
 #include "tailor/bvh/direction_mask.hpp"
@@ -67,17 +69,29 @@ TEST(DirectionMask, EveryDirectionItHoldsIsTrueOverTheWholeStep) {
   const int trials = tailor::testing::sanitized() ? 3000 : 30000;
   int bits_set = 0;
   for (int trial = 0; trial < trials; ++trial) {
-    const int kind = trial % 5;
-    // Scales from underflowing to near-overflowing products, and motions from none to
-    // large (the normal may turn through more than 90 degrees).
-    const double scale = std::ldexp(1.0, std::array{0, -500, 480, -1000, 20}[kind]);
-    const double motion = std::array{1e-3, 0.5, 2.0, 1e-9, 0.0}[trial / 5 % 5];
+    const int kind = trial % 7;
+    // Scales from underflowing to overflowing products (in float: edges of 2^±62 give
+    // products at the ends of its range), and motions from none to large (the normal may
+    // turn through more than 90 degrees).
+    const double scale = std::ldexp(1.0, std::array{0, -500, 480, -1000, 20, -62, 62}[kind]);
+    const double motion = std::array{1e-3, 0.5, 2.0, 1e-9, 0.0}[trial / 7 % 5];
     std::array<Vec3, 6> c;
     for (int k = 0; k < 3; ++k) c[k] = scale * Vec3(uniform(rng), uniform(rng), uniform(rng));
+    if (trial % 3 == 0) {
+      // Nearly in a coordinate plane: its normal is within about 10^-5 of perpendicular
+      // to the other axes, around the bound's relative size.
+      c[1] = c[0] + scale * Vec3(1, 0, 1e-5 * uniform(rng));
+      c[2] = c[0] + scale * Vec3(0, 1, 1e-5 * uniform(rng));
+    } else if (trial % 3 == 1) {
+      // A normal component that is a difference of nearly equal products: n_z = (1 + ε2)
+      // - (1 + ε1) with ε below float precision, so its sign is lost in rounding.
+      c[1] = c[0] + scale * Vec3(1, 1 + 0x1p-23 * uniform(rng), 0);
+      c[2] = c[0] + scale * Vec3(1, 1 + 0x1p-23 * uniform(rng), 1);
+    }
     for (int k = 0; k < 3; ++k) {
       c[3 + k] = c[k] + motion * scale * Vec3(uniform(rng), uniform(rng), uniform(rng));
     }
-    if (trial % 7 == 0) c[2] = c[0] + 1e-12 * (c[1] - c[0]);  // nearly degenerate at t = 0
+    if (trial % 11 == 0) c[2] = c[0] + 1e-12 * (c[1] - c[0]);  // nearly degenerate at t = 0
     ASSERT_TRUE(mask_is_true(c)) << "trial " << trial;
     bits_set += __builtin_popcount(direction_mask(c[0], c[1], c[2], c[3], c[4], c[5]));
   }
@@ -132,19 +146,20 @@ TEST(DirectionMask, DegenerateOverflowingOrBatchedTrianglesAreHandled) {
   EXPECT_EQ(both, up & direction_mask(zero, y, x, zero, y, x));
 }
 
-TEST(DirectionMask, TwoFourAndEightLanePathsAgreeBitForBit) {
-  // Batches of 1-16 random triangles over many scales and motions (near-degenerate and
-  // overflowing ones too): the SSE2, AVX2 and AVX-512 paths of the dispatch give the same
-  // mask, which is the and of the single-triangle masks.
-  if (!detail::direction_mask_has_four_lanes()) GTEST_SKIP() << "no AVX2 on this processor";
-  const bool eight = detail::direction_mask_has_eight_lanes();
-  if (!eight) std::cout << "no AVX-512 on this processor: eight-lane path not compared\n";
+TEST(DirectionMask, Sse2Avx2AndAvx512PathsAgreeBitForBit) {
+  // Batches of 1-16 random triangles over many scales (across both ends of the float
+  // range) and motions (near-degenerate and overflowing ones too): the SSE2, AVX2 and
+  // AVX-512 paths of the dispatch give the same mask, which is the and of the
+  // single-triangle masks.
+  if (!detail::direction_mask_has_avx2()) GTEST_SKIP() << "no AVX2 on this processor";
+  const bool avx512 = detail::direction_mask_has_avx512();
+  if (!avx512) std::cout << "no AVX-512 on this processor: its path not compared\n";
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> uniform(-1, 1);
   std::uniform_int_distribution<int> count_of(1, MovingTriangleBatch::kCapacity);
   int nonzero = 0;
   for (int trial = 0; trial < 3000; ++trial) {
-    const double scale = std::ldexp(1.0, (trial % 40) * 30 - 600);
+    const double scale = std::ldexp(1.0, (trial % 40) * 4 - 80);
     const double motion = trial % 3 == 0 ? 1e-3 : trial % 3 == 1 ? 0.3 : 2.0;
     MovingTriangleBatch batch;
     DirectionMask expected = kAllDirections;
@@ -164,15 +179,46 @@ TEST(DirectionMask, TwoFourAndEightLanePathsAgreeBitForBit) {
       expected &= direction_mask(c[0], c[1], c[2], c[3], c[4], c[5]);
     }
     batch.pad();
-    const DirectionMask two = detail::direction_mask_two_lanes(batch);
-    ASSERT_EQ(two, detail::direction_mask_four_lanes(batch)) << "trial " << trial;
-    if (eight) {
-      ASSERT_EQ(two, detail::direction_mask_eight_lanes(batch)) << "trial " << trial;
+    const DirectionMask sse2 = detail::direction_mask_sse2(batch);
+    ASSERT_EQ(sse2, detail::direction_mask_avx2(batch)) << "trial " << trial;
+    if (avx512) {
+      ASSERT_EQ(sse2, detail::direction_mask_avx512(batch)) << "trial " << trial;
     }
-    ASSERT_EQ(two, expected) << "trial " << trial;
-    nonzero += two != 0;
+    ASSERT_EQ(sse2, expected) << "trial " << trial;
+    nonzero += sse2 != 0;
   }
   EXPECT_GT(nonzero, 500);  // the comparison is not only of empty masks
+}
+
+TEST(DirectionMask, LanesPastThePaddedBatchAreNeverRead) {
+  // The wide paths cover more lanes than a short batch holds (sixteen at once with
+  // AVX-512, eight with AVX2): lanes past padded_count() hold NaN here, which would clear
+  // every bit if a path read them.
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> uniform(-0.2, 0.2);
+  for (int count = 1; count <= MovingTriangleBatch::kCapacity; ++count) {
+    MovingTriangleBatch batch;
+    for (auto& row : batch.coordinate) {
+      for (double& value : row) value = std::numeric_limits<double>::quiet_NaN();
+    }
+    DirectionMask expected = kAllDirections;
+    for (int i = 0; i < count; ++i) {
+      // Facing +z, tilted a little: every mask holds +z.
+      const Vec3 a(i, uniform(rng), uniform(rng)), b = a + Vec3(1, uniform(rng), uniform(rng)),
+                                                   c = a + Vec3(uniform(rng), 1, uniform(rng));
+      batch.add(a.data(), b.data(), c.data(), a.data(), b.data(), c.data());
+      expected &= direction_mask(a, b, c, a, b, c);
+    }
+    batch.pad();
+    ASSERT_NE(expected & (DirectionMask{1} << 4), 0u);
+    EXPECT_EQ(detail::direction_mask_sse2(batch), expected) << count << " triangles";
+    if (detail::direction_mask_has_avx2()) {
+      EXPECT_EQ(detail::direction_mask_avx2(batch), expected) << count << " triangles";
+    }
+    if (detail::direction_mask_has_avx512()) {
+      EXPECT_EQ(detail::direction_mask_avx512(batch), expected) << count << " triangles";
+    }
+  }
 }
 
 }  // namespace

@@ -49,7 +49,7 @@ FloatBox grow(std::mt19937_64& rng, int leaves, int& lane, const BatchBounds& bo
 }
 
 TEST(GroupBoxes, EveryNodeIsItsLeafOrTheUnionOfItsChildren) {
-  const bool avx2 = detail::direction_mask_has_four_lanes();
+  const bool avx2 = detail::direction_mask_has_avx2();
   if (!avx2) std::cout << "no AVX2 on this processor: the AVX2 path is not compared\n";
   std::mt19937_64 rng(17);
   std::uniform_real_distribution<float> uniform(-100, 100);

@@ -10,33 +10,18 @@ namespace {
 
 constexpr double kFloatMax = std::numeric_limits<float>::max();
 
-template <int W>
-struct FloatLanes;
-template <>
-struct FloatLanes<2> {
-  using type = float __attribute__((vector_size(8)));
-};
-template <>
-struct FloatLanes<4> {
-  using type = float __attribute__((vector_size(16)));
-};
-template <>
-struct FloatLanes<8> {
-  using type = float __attribute__((vector_size(32)));
-};
-
 // Per lane, a float <= x (float_at_most, float_box.hpp) clamped to the float range, without
 // branches: x - |x|·2^-23 - 2^-149 is below x by more than half a float ulp, so rounding it
 // to the nearest float cannot land above x.
 template <int W>
-[[gnu::always_inline]] inline typename FloatLanes<W>::type float_below(
+[[gnu::always_inline]] inline typename lanes::FloatVectors<W>::Lanes float_below(
     typename lanes::Vectors<W>::Lanes x) {
   using Lanes = typename lanes::Vectors<W>::Lanes;
   const Lanes top = Lanes{} + kFloatMax;
   Lanes nudged = x - lanes::abs(x) * 0x1p-23 - 0x1p-149;
   nudged = top < nudged ? top : nudged;
   nudged = nudged < -top ? -top : nudged;
-  return __builtin_convertvector(nudged, typename FloatLanes<W>::type);
+  return __builtin_convertvector(nudged, typename lanes::FloatVectors<W>::Lanes);
 }
 
 // The bounds of lanes i to i + W.

@@ -21,10 +21,10 @@ void batch_bounds(const MovingTriangleBatch& batch, BatchBounds& bounds);
 
 namespace detail {
 /// batch_bounds two lanes at a time (SSE2) and four at a time (AVX2: call only when
-/// direction_mask_has_four_lanes()); exposed so that a test can check they agree.
+/// direction_mask_has_avx2()); exposed so that a test can check they agree.
 void batch_bounds_two_lanes(const MovingTriangleBatch& batch, BatchBounds& bounds);
 void batch_bounds_four_lanes(const MovingTriangleBatch& batch, BatchBounds& bounds);
-/// Eight at a time (AVX-512 F and DQ: call only when direction_mask_has_eight_lanes()).
+/// Eight at a time (AVX-512 F and DQ: call only when direction_mask_has_avx512()).
 void batch_bounds_eight_lanes(const MovingTriangleBatch& batch, BatchBounds& bounds);
 }  // namespace detail
 

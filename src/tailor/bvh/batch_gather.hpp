@@ -18,7 +18,7 @@ void gather_batch(const double* x0, const double* x1, std::span<const std::array
 
 namespace detail {
 /// gather_batch one corner at a time (any processor) and four triangles at a time (AVX2:
-/// call only when direction_mask_has_four_lanes()): a corner is one masked 4-double load
+/// call only when direction_mask_has_avx2()): a corner is one masked 4-double load
 /// (the fourth lane is neither read nor used) and four corners are transposed in
 /// registers, instead of three scalar loads and stores each. Exposed so that a test can
 /// check they agree.

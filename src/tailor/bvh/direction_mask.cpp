@@ -1,6 +1,10 @@
 #include "tailor/bvh/direction_mask.hpp"
 
+#include <immintrin.h>
+
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 
 #include "tailor/bvh/lane_vectors.hpp"
 
@@ -12,123 +16,200 @@ constexpr int kDirections[13][3] = {{1, 0, 0},  {0, 1, 0},  {0, 0, 1},  {1, 1, 0
                                     {1, 0, 1},  {1, 0, -1}, {0, 1, 1},  {0, 1, -1}, {1, 1, 1},
                                     {1, 1, -1}, {1, -1, 1}, {1, -1, -1}};
 
-using lanes::abs;
-using lanes::load;
-using lanes::Vectors;
+using lanes::FloatVectors;
 
-template <class Lanes>
-[[gnu::always_inline]] inline Lanes l1(Lanes x, Lanes y, Lanes z) {
-  return abs(x) + abs(y) + abs(z);
+// The four edge vectors of F triangles, u0, v0, u1, v1 (u = b - a, v = c - a at t = 0 and
+// t = 1), three coordinates each: each the difference of two batch rows computed in double
+// and rounded to float.
+template <int F>
+struct EdgeLanes {
+  typename FloatVectors<F>::Lanes coordinate[12];
+};
+
+// The rows (to, from) of each of the twelve, in EdgeLanes order.
+constexpr int kEdgeRows[12][2] = {{3, 0},  {4, 1},   {5, 2},   {6, 0},  {7, 1},   {8, 2},
+                                  {12, 9}, {13, 10}, {14, 11}, {15, 9}, {16, 10}, {17, 11}};
+
+template <int F>
+[[gnu::always_inline]] inline typename FloatVectors<F>::Lanes l1(
+    const typename FloatVectors<F>::Lanes* v) {
+  return lanes::abs(v[0]) + lanes::abs(v[1]) + lanes::abs(v[2]);
 }
 
 // Per lane, the mask of its triangle.
 //
-// Error analysis (the argument is in direction_mask.hpp). ñ0, m = ñX, ñ1 are the computed
-// control normals; each is within e_i (2-norm) of the exact one, with the generous bound
-// e = 2^-48·|u|₁|v|₁ per cross product of rounded differences (each component of a rounded
-// cross product is within 3·2^-53·|u|₁|v|₁ of the exact one). For d with components in
-// {-1, 0, 1} (|d|₂ <= √3 < 2):
-//   n_i·d >= ñ_i·d - 2 e_i >= m·d - |ñ_i - m|₁ - 2 e_i.
-// The computed δ = |ñ0 - m|₁ + |ñ1 - m|₁ (one rounded subtraction per component, a few
-// additions) is at least max_i |ñ_i - m|₁·(1 - 2^-50); the computed m·d (at most two
-// additions of terms bounded by |m|₁) is within 2^-51·|m|₁ of the exact m·d; underflow adds
-// at most 2^-1075 per rounding. So fl(m·d) > δ(1 + 2^-48) + 2^-50·|m|₁ + 2·(e0 + eX + e1)
-// + 2^-1060 proves n_i·d > 0 for i = 0, X, 1; the slack factors absorb the few roundings of
-// the threshold. Overflow or NaN make the threshold or the dot NaN or infinite, and every
-// comparison with it false.
-template <int W>
-[[gnu::always_inline]] inline typename Vectors<W>::Bits lane_masks(const MovingTriangleBatch& batch,
-                                                                   int first_lane) {
-  using Lanes = typename Vectors<W>::Lanes;
-  using LaneBits = typename Vectors<W>::Bits;
-  const auto& c = batch.coordinate;
-  const auto at = [&](int row) { return load<W>(c[row] + first_lane); };
-  // u = b - a, v = c - a at t = 0 (rows 0-8) and t = 1 (rows 9-17).
-  const Lanes u0x = at(3) - at(0), u0y = at(4) - at(1), u0z = at(5) - at(2);
-  const Lanes v0x = at(6) - at(0), v0y = at(7) - at(1), v0z = at(8) - at(2);
-  const Lanes u1x = at(12) - at(9), u1y = at(13) - at(10), u1z = at(14) - at(11);
-  const Lanes v1x = at(15) - at(9), v1y = at(16) - at(10), v1z = at(17) - at(11);
+// Error analysis (the argument is in direction_mask.hpp). Let U, V be an exact edge
+// vector pair and u, v the floats used: each coordinate is rounded twice (the double
+// difference, then to float), so |u_k - U_k| <= ε|u_k| + τ with ε = 2^-23, τ = 2^-149
+// (τ for a float below the normal range). Each component of a computed cross product
+// fl(u×v) is then within 3.1ε·(|u_i||v_j| + |u_j||v_i|) + 1.01τ·(|u_i| + |v_j| + |u_j| +
+// |v_i|) + 2^-148 of the exact U×V (two rounded products, one rounded difference, and the
+// input errors); summed over the components (a bound on the 2-norm), and generously:
+//   e(u, v) = 2^-21·(|u|₁ + 2^-126)(|v|₁ + 2^-126) + 2^-146.
+// m = ñX (two cross products, one rounded sum, a halving) is within (e(u0, v1) +
+// e(u1, v0)) / 2 + 2^-24·(|u0|₁|v1|₁ + |u1|₁|v0|₁) <= e(u0, v1) + e(u1, v0) of the exact
+// nX; so e0 + eX + e1 <= 2^-21·(|u0|₁ + |u1|₁ + 2^-125)(|v0|₁ + |v1|₁ + 2^-125) + 2^-144
+// (the product's terms are the four pairs of e). For d with components in {-1, 0, 1}
+// (|d|₂ < 2): n_i·d >= ñ_i·d - 2 e_i >= m·d - |ñ_i - m|₁ - 2 e_i. The computed δ =
+// |ñ0 - m|₁ + |ñ1 - m|₁ is at least max_i |ñ_i - m|₁·(1 - 2^-21); the computed m·d (at most
+// two additions of terms bounded by |m|₁) is within 2^-22·|m|₁ of m·d. So
+//   fl(m·d) > δ(1 + 2^-19) + 2^-21·|m|₁ + 2·errors + 2^-126
+// proves n_i·d > 0 for i = 0, X, 1: each term has at least twice what it must cover, which
+// absorbs the few roundings of the threshold, and 2^-126 covers the constants (2^-144 and
+// the roundings below the normal range). A coordinate beyond the float range rounds to an
+// infinity; an overflowing product or sum makes the threshold infinite or NaN (|m|₁ bounds
+// every dot), and every comparison with it false: no direction, never a wrong one.
+template <int F>
+[[gnu::always_inline]] inline typename FloatVectors<F>::Bits float_lane_masks(
+    const EdgeLanes<F>& e) {
+  using Lanes = typename FloatVectors<F>::Lanes;
+  using Bits = typename FloatVectors<F>::Bits;
+  const Lanes* u0 = e.coordinate;
+  const Lanes* v0 = e.coordinate + 3;
+  const Lanes* u1 = e.coordinate + 6;
+  const Lanes* v1 = e.coordinate + 9;
   // n0 = u0×v0, n1 = u1×v1, m = (u0×v1 + u1×v0) / 2.
-  const Lanes x = 0.5 * ((u0y * v1z - u0z * v1y) + (u1y * v0z - u1z * v0y));
-  const Lanes y = 0.5 * ((u0z * v1x - u0x * v1z) + (u1z * v0x - u1x * v0z));
-  const Lanes z = 0.5 * ((u0x * v1y - u0y * v1x) + (u1x * v0y - u1y * v0x));
-  const Lanes delta =
-      l1((u0y * v0z - u0z * v0y) - x, (u0z * v0x - u0x * v0z) - y, (u0x * v0y - u0y * v0x) - z) +
-      l1((u1y * v1z - u1z * v1y) - x, (u1z * v1x - u1x * v1z) - y, (u1x * v1y - u1y * v1x) - z);
-  // e0 + eX + e1 = 2^-48·(|u0|₁|v0|₁ + |u0|₁|v1|₁ + |u1|₁|v0|₁ + |u1|₁|v1|₁), factored.
+  const Lanes m[3] = {0.5f * ((u0[1] * v1[2] - u0[2] * v1[1]) + (u1[1] * v0[2] - u1[2] * v0[1])),
+                      0.5f * ((u0[2] * v1[0] - u0[0] * v1[2]) + (u1[2] * v0[0] - u1[0] * v0[2])),
+                      0.5f * ((u0[0] * v1[1] - u0[1] * v1[0]) + (u1[0] * v0[1] - u1[1] * v0[0]))};
+  const Lanes n0_m[3] = {(u0[1] * v0[2] - u0[2] * v0[1]) - m[0],
+                         (u0[2] * v0[0] - u0[0] * v0[2]) - m[1],
+                         (u0[0] * v0[1] - u0[1] * v0[0]) - m[2]};
+  const Lanes n1_m[3] = {(u1[1] * v1[2] - u1[2] * v1[1]) - m[0],
+                         (u1[2] * v1[0] - u1[0] * v1[2]) - m[1],
+                         (u1[0] * v1[1] - u1[1] * v1[0]) - m[2]};
+  const Lanes delta = l1<F>(n0_m) + l1<F>(n1_m);
   const Lanes errors =
-      0x1p-48 * ((l1(u0x, u0y, u0z) + l1(u1x, u1y, u1z)) * (l1(v0x, v0y, v0z) + l1(v1x, v1y, v1z)));
-  const Lanes threshold = delta * (1 + 0x1p-48) + 0x1p-50 * l1(x, y, z) + 2 * errors + 0x1p-1060;
+      0x1p-21f * ((l1<F>(u0) + l1<F>(u1) + 0x1p-125f) * (l1<F>(v0) + l1<F>(v1) + 0x1p-125f));
+  const Lanes threshold = delta * (1 + 0x1p-19f) + 0x1p-21f * l1<F>(m) + 2 * errors + 0x1p-126f;
   const Lanes negative_threshold = -threshold;
   // Dot products in the order of kDirections, each as at most two additions.
+  const Lanes x = m[0], y = m[1], z = m[2];
   const Lanes xy = x + y, x_y = x - y;
   const Lanes dots[13] = {x,     y,     z,      xy,     x_y,     x + z,  x - z,
                           y + z, y - z, xy + z, xy - z, x_y + z, x_y - z};
-  LaneBits mask = {};
+  Bits mask = {};
   for (int j = 0; j < 13; ++j) {
-    mask |= (dots[j] > threshold) & (std::int64_t{1} << (2 * j));
-    mask |= (dots[j] < negative_threshold) & (std::int64_t{1} << (2 * j + 1));
+    mask |= (dots[j] > threshold) & (std::int32_t{1} << (2 * j));
+    mask |= (dots[j] < negative_threshold) & (std::int32_t{1} << (2 * j + 1));
   }
   return mask;
 }
 
-// The and of the masks of lanes [first, end) (a multiple of W of them, at least W), as a
-// scalar: no vector crosses the call into the functions built for wider instruction sets.
-template <int W>
-[[gnu::always_inline]] inline std::int64_t lanes_mask(const MovingTriangleBatch& batch, int first,
-                                                      int end) {
-  typename Vectors<W>::Bits masks = lane_masks<W>(batch, first);
-  for (first += W; first < end; first += W) masks &= lane_masks<W>(batch, first);
-  std::int64_t all = kAllDirections;
-  for (int i = 0; i < W; ++i) all &= masks[i];
+// The and of the lanes' masks, as a scalar: no vector crosses the call from the functions
+// built for wider instruction sets.
+template <int F>
+[[gnu::always_inline]] inline DirectionMask and_of_lane_masks(const EdgeLanes<F>& e) {
+  const typename FloatVectors<F>::Bits bits = float_lane_masks<F>(e);
+  std::int32_t all = static_cast<std::int32_t>(kAllDirections);
+  for (int i = 0; i < F; ++i) all &= bits[i];
+  return static_cast<DirectionMask>(all);
+}
+
+// SSE2: four lanes (two doubles per register: two differences, rounded and joined) at a
+// time; a padded batch has a multiple of four lanes.
+DirectionMask batch_mask_sse2(const MovingTriangleBatch& batch) {
+  const auto& c = batch.coordinate;
+  DirectionMask all = kAllDirections;
+  for (int first = 0; first < batch.padded_count(); first += 4) {
+    EdgeLanes<4> e;
+    for (int k = 0; k < 12; ++k) {
+      const double* to = c[kEdgeRows[k][0]] + first;
+      const double* from = c[kEdgeRows[k][1]] + first;
+      const __m128 low = _mm_cvtpd_ps(_mm_sub_pd(_mm_load_pd(to), _mm_load_pd(from)));
+      const __m128 high = _mm_cvtpd_ps(_mm_sub_pd(_mm_load_pd(to + 2), _mm_load_pd(from + 2)));
+      e.coordinate[k] = (FloatVectors<4>::Lanes)_mm_movelh_ps(low, high);
+    }
+    all &= and_of_lane_masks<4>(e);
+  }
   return all;
 }
 
-template <int W>
-[[gnu::always_inline]] inline DirectionMask batch_mask(const MovingTriangleBatch& batch) {
-  return static_cast<DirectionMask>(lanes_mask<W>(batch, 0, batch.padded_count()));
-}
-
-// The same operations on four lanes at a time: every lane's result is bit for bit that of
-// the two-lane code (no FMA: the target adds only AVX2, so nothing is contracted).
+// AVX2: eight lanes at a time. When only four of them are in the padded batch, the other
+// four repeat them (the and of a mask with itself changes nothing).
 [[gnu::target("avx2")]] DirectionMask batch_mask_avx2(const MovingTriangleBatch& batch) {
-  return batch_mask<4>(batch);
+  const auto& c = batch.coordinate;
+  const int lanes = batch.padded_count();
+  DirectionMask all = kAllDirections;
+  for (int first = 0; first < lanes; first += 8) {
+    const bool whole = first + 8 <= lanes;
+    EdgeLanes<8> e;
+    for (int k = 0; k < 12; ++k) {
+      const double* to = c[kEdgeRows[k][0]] + first;
+      const double* from = c[kEdgeRows[k][1]] + first;
+      const __m128 low = _mm256_cvtpd_ps(_mm256_sub_pd(_mm256_load_pd(to), _mm256_load_pd(from)));
+      const __m128 high =
+          whole ? _mm256_cvtpd_ps(_mm256_sub_pd(_mm256_load_pd(to + 4), _mm256_load_pd(from + 4)))
+                : low;
+      e.coordinate[k] = (FloatVectors<8>::Lanes)_mm256_set_m128(high, low);
+    }
+    all &= and_of_lane_masks<8>(e);
+  }
+  return all;
 }
 
-// Eight lanes at a time, and the last four (a batch is padded to a multiple of four
-// lanes) as in batch_mask_avx2. The same operations per lane, so bit for bit the same
-// masks (-ffp-contract=off keeps a·b + c two roundings where AVX-512 offers an FMA).
-// (Packing the comparisons' mask registers into words instead of lane bits was slower.)
+using Doubles8 = double __attribute__((vector_size(64)));
+
+// Lanes 0-7 of a row; lanes 0-3 twice when only they are in the batch. (A generic
+// shuffle: GCC 12's broadcast intrinsic warns of an uninitialised operand.)
+[[gnu::target("avx512f,avx512dq,avx2"), gnu::always_inline]] inline __m512d first_eight(
+    const double* row, bool eight) {
+  if (eight) return _mm512_load_pd(row);
+  const __m256d four = _mm256_load_pd(row);
+  return __builtin_shufflevector(four, four, 0, 1, 2, 3, 0, 1, 2, 3);
+}
+
+// AVX-512: sixteen lanes, the whole batch, at once. Lanes past the padded batch are not
+// read: they take the doubles of lanes already in it (a batch of four lanes is broadcast
+// to eight; lanes 8 + i past it keep those of lane i, by a masked load), so they repeat
+// masks already in the and.
 [[gnu::target("avx512f,avx512dq,avx2")]] DirectionMask batch_mask_avx512(
     const MovingTriangleBatch& batch) {
-  const int lanes = batch.padded_count(), wide = lanes & ~7;
-  std::int64_t all = kAllDirections;
-  if (wide > 0) all &= lanes_mask<8>(batch, 0, wide);
-  if (wide < lanes) all &= lanes_mask<4>(batch, wide, lanes);
-  return static_cast<DirectionMask>(all);
+  static_assert(MovingTriangleBatch::kCapacity == 16, "one sixteen-lane pass per batch");
+  const auto& c = batch.coordinate;
+  const int lanes = batch.padded_count();
+  const bool eight = lanes >= 8;
+  // Lanes 8 + i read for i < lanes - 8.
+  const __mmask8 high_lanes =
+      static_cast<__mmask8>(lanes <= 8 ? 0 : (1u << std::min(lanes - 8, 8)) - 1);
+  EdgeLanes<16> e;
+  for (int k = 0; k < 12; ++k) {
+    const double* to = c[kEdgeRows[k][0]];
+    const double* from = c[kEdgeRows[k][1]];
+    const __m512d to_low = first_eight(to, eight), from_low = first_eight(from, eight);
+    const __m512d to_high = _mm512_mask_load_pd(to_low, high_lanes, to + 8);
+    const __m512d from_high = _mm512_mask_load_pd(from_low, high_lanes, from + 8);
+    // (Generic conversions: GCC 12's _mm512_cvtpd_ps warns of an uninitialised operand.)
+    const auto low = __builtin_convertvector((Doubles8)(to_low - from_low), FloatVectors<8>::Lanes);
+    const auto high =
+        __builtin_convertvector((Doubles8)(to_high - from_high), FloatVectors<8>::Lanes);
+    e.coordinate[k] =
+        __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  }
+  return and_of_lane_masks<16>(e);
 }
 
 }  // namespace
 
 namespace detail {
 
-DirectionMask direction_mask_two_lanes(const MovingTriangleBatch& batch) {
-  return batch_mask<2>(batch);
+DirectionMask direction_mask_sse2(const MovingTriangleBatch& batch) {
+  return batch_mask_sse2(batch);
 }
 
-DirectionMask direction_mask_four_lanes(const MovingTriangleBatch& batch) {
+DirectionMask direction_mask_avx2(const MovingTriangleBatch& batch) {
   return batch_mask_avx2(batch);
 }
 
-DirectionMask direction_mask_eight_lanes(const MovingTriangleBatch& batch) {
+DirectionMask direction_mask_avx512(const MovingTriangleBatch& batch) {
   return batch_mask_avx512(batch);
 }
 
-bool direction_mask_has_eight_lanes() {
+bool direction_mask_has_avx512() {
   return lanes::has_avx512();
 }
 
-bool direction_mask_has_four_lanes() {
+bool direction_mask_has_avx2() {
   return lanes::has_avx2();
 }
 
@@ -150,9 +231,9 @@ Vec3 mask_axis(DirectionMask mask) {
 
 DirectionMask direction_mask(const MovingTriangleBatch& batch) {
   if (batch.count == 0) return kAllDirections;
-  if (lanes::has_avx512()) return detail::direction_mask_eight_lanes(batch);
-  return lanes::has_avx2() ? detail::direction_mask_four_lanes(batch)
-                           : detail::direction_mask_two_lanes(batch);
+  if (lanes::has_avx512()) return detail::direction_mask_avx512(batch);
+  return lanes::has_avx2() ? detail::direction_mask_avx2(batch)
+                           : detail::direction_mask_sse2(batch);
 }
 
 DirectionMask direction_mask(const Vec3& a0, const Vec3& b0, const Vec3& c0, const Vec3& a1,

@@ -27,7 +27,7 @@ void write_group_boxes(const BatchBounds& bounds, std::uint32_t leaf_bits, int c
 
 namespace detail {
 /// write_group_boxes() with two SSE2 vectors per box (any x86-64 processor), and with one
-/// AVX2 vector per box (call only when direction_mask_has_four_lanes()), which rewrites
+/// AVX2 vector per box (call only when direction_mask_has_avx2()), which rewrites
 /// the eight bytes after each box with their own value. Exposed so that a test can check
 /// they agree.
 void write_group_boxes_sse2(const BatchBounds& bounds, std::uint32_t leaf_bits, int count,

@@ -1,14 +1,16 @@
 #pragma once
 /// @file
-/// GCC/Clang vectors of W doubles for the lane kernels over a MovingTriangleBatch
-/// (direction_mask.cpp): W = 2 is the width of SSE2 (wider generic vectors
-/// are lowered lane by lane there); W = 4 is used only inside functions built for AVX2,
-/// chosen at run time (has_avx2()), where it maps to ymm registers, and W = 8 only inside
+/// GCC/Clang vectors of W doubles and of F floats for the lane kernels over a
+/// MovingTriangleBatch (batch_bounds.cpp, direction_mask.cpp): W = 2 doubles or F = 4
+/// floats is the width of SSE2 (wider generic vectors are lowered lane by lane there);
+/// W = 4 and F = 8 are used only inside functions built for AVX2, chosen at run time
+/// (has_avx2()), where they map to ymm registers, and W = 8 and F = 16 only inside
 /// functions built for AVX-512 (has_avx512(): zmm registers). Internal to the bvh module.
 
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
 // The four-lane helpers are always inlined into the AVX2 functions, so no AVX vector ever
 // crosses a call: GCC's warning about the ABI of such calls does not apply.
@@ -39,16 +41,43 @@ struct Vectors<8> {
   using Bits = std::int64_t __attribute__((vector_size(64)));
 };
 
+/// Lanes of F floats and comparison masks (F = 2 only as the result of converting two
+/// doubles).
+template <int F>
+struct FloatVectors;
+template <>
+struct FloatVectors<2> {
+  using Lanes = float __attribute__((vector_size(8)));
+  using Bits = std::int32_t __attribute__((vector_size(8)));
+};
+template <>
+struct FloatVectors<4> {
+  using Lanes = float __attribute__((vector_size(16)));
+  using Bits = std::int32_t __attribute__((vector_size(16)));
+};
+template <>
+struct FloatVectors<8> {
+  using Lanes = float __attribute__((vector_size(32)));
+  using Bits = std::int32_t __attribute__((vector_size(32)));
+};
+template <>
+struct FloatVectors<16> {
+  using Lanes = float __attribute__((vector_size(64)));
+  using Bits = std::int32_t __attribute__((vector_size(64)));
+};
+
 template <int W>
 [[gnu::always_inline]] inline typename Vectors<W>::Lanes load(const double* p) {
   typename Vectors<W>::Lanes v;
   std::memcpy(&v, p, sizeof v);
   return v;
 }
+/// |v| per lane (doubles or floats): the sign bits cleared.
 template <class Lanes>
 [[gnu::always_inline]] inline Lanes abs(Lanes v) {
   using Bits = decltype(v < v);
-  return (Lanes)((Bits)v & std::numeric_limits<std::int64_t>::max());
+  using Integer = std::remove_cvref_t<decltype(Bits{}[0])>;
+  return (Lanes)((Bits)v & std::numeric_limits<Integer>::max());
 }
 /// Whether this processor runs the AVX2 kernels (checked once).
 inline bool has_avx2() {
