@@ -148,8 +148,6 @@ DirectionMask batch_mask_sse2(const MovingTriangleBatch& batch) {
   return all;
 }
 
-using Doubles8 = double __attribute__((vector_size(64)));
-
 // Lanes 0-7 of a row; lanes 0-3 twice when only they are in the batch. (A generic
 // shuffle: GCC 12's broadcast intrinsic warns of an uninitialised operand.)
 [[gnu::target("avx512f,avx512dq,avx2"), gnu::always_inline]] inline __m512d first_eight(
@@ -180,9 +178,10 @@ using Doubles8 = double __attribute__((vector_size(64)));
     const __m512d to_high = _mm512_mask_load_pd(to_low, high_lanes, to + 8);
     const __m512d from_high = _mm512_mask_load_pd(from_low, high_lanes, from + 8);
     // (Generic conversions: GCC 12's _mm512_cvtpd_ps warns of an uninitialised operand.)
-    const auto low = __builtin_convertvector((Doubles8)(to_low - from_low), FloatVectors<8>::Lanes);
-    const auto high =
-        __builtin_convertvector((Doubles8)(to_high - from_high), FloatVectors<8>::Lanes);
+    const auto low = __builtin_convertvector((lanes::Vectors<8>::Lanes)(to_low - from_low),
+                                             FloatVectors<8>::Lanes);
+    const auto high = __builtin_convertvector((lanes::Vectors<8>::Lanes)(to_high - from_high),
+                                              FloatVectors<8>::Lanes);
     e.coordinate[k] =
         __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
   }

@@ -3,7 +3,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <bit>
 #include <numeric>
 
 #include "tailor/bvh/batch_bounds.hpp"
