@@ -10,6 +10,8 @@
 
 #include "tailor/bvh/aabb.hpp"
 #include "tailor/bvh/mesh_bvh.hpp"
+#include "tailor/culling/contour_test.hpp"
+#include "tailor/culling/node_contours.hpp"
 #include "tailor/detection/self_collision_detector.hpp"
 #include "tailor/mesh/procedural_meshes.hpp"
 #include "tailor/mesh/procedural_steps.hpp"
@@ -44,6 +46,9 @@ void set_counters(benchmark::State& state, const DetectionStats& s, int faces) {
   state.counters["traversal_ms"] = s.traversal_ms;
   state.counters["pairs_ms"] = s.pair_generation_ms;
   state.counters["ccd_ms"] = s.ccd_ms;
+  state.counters["node_pairs"] = static_cast<double>(s.node_pairs_visited);
+  state.counters["contour_tests"] = static_cast<double>(s.contour_tests);
+  state.counters["cone_culls"] = static_cast<double>(s.nodes_culled_by_cones);
   state.counters["ctps"] = static_cast<double>(s.candidate_triangle_pairs);
   state.counters["vf"] = static_cast<double>(s.vf_tested);
   state.counters["ee"] = static_cast<double>(s.ee_tested);
@@ -122,6 +127,28 @@ void BM_SweptBoxFloor(benchmark::State& state) {
   state.counters["triangles"] = s.mesh->num_faces();
 }
 
+// The contour test of the crumpling cloth's root (its boundary: 4 x cells edges), the whole
+// traversal of that step; args: grid cells per side, threads.
+void BM_ContourTestOfRoot(benchmark::State& state) {
+  const Scene& s = scene(static_cast<int>(state.range(0)), 0.5);
+  MeshBvh bvh(*s.mesh, s.x0);
+  bvh.refit(s.x0, s.x1, true);
+  const NodeContours contours(*s.mesh, bvh);
+  const std::optional<Vec3> axis = bvh.acute_axis(0);
+  if (!axis || !contours.has_single_loop(0)) {
+    state.SkipWithError("the root has no cone axis or no single boundary loop");
+    return;
+  }
+  tbb::task_arena arena(static_cast<int>(state.range(1)));
+  bool simple = false;
+  for (auto _ : state) {
+    arena.execute([&] { simple = contour_stays_simple(contours.loop(0), s.x0, s.x1, *axis); });
+    benchmark::DoNotOptimize(simple);
+  }
+  state.counters["edges"] = static_cast<double>(contours.loop(0).size());
+  state.counters["simple"] = simple;
+}
+
 // The direction-mask kernel alone on batches in cache: 1,024 batches of 12 triangles of
 // the crumpling cloth's 10K-triangle step (as the refit forms them: consecutive faces).
 void BM_DirectionMaskKernel(benchmark::State& state) {
@@ -164,6 +191,11 @@ BENCHMARK(BM_RefitOnly)->Apply(sizes);
 BENCHMARK(BM_RefitBoxesOnly)->Apply(sizes);
 BENCHMARK(BM_SweptBoxFloor)->Apply(sizes);
 BENCHMARK(BM_DirectionMaskKernel);
+BENCHMARK(BM_ContourTestOfRoot)
+    ->ArgsProduct({{224, 708}, {1, 2}})
+    ->ArgNames({"cells", "threads"})
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace tailor

@@ -103,6 +103,51 @@ TEST(ContourTest, CollinearEdgesAreSeparatedAlongTheirLine) {
   EXPECT_FALSE(contour_stays_simple(loop, x0, x1, Vec3::UnitZ()));
 }
 
+// Loops of 512 edges and more are tested in parallel: the same answers.
+TEST(ContourTest, LongLoopsGiveTheSameAnswers) {
+  // A rigidly moving strip of 300 x 3 cells: long straight sides along the x axis, whose
+  // boxes all overlap in y.
+  const MeshData strip = make_grid(300, 3, 3.0, 0.03);
+  const TriangleMesh mesh(static_cast<Index>(strip.vertices.rows()), strip.faces);
+  const MeshBvh bvh(mesh, strip.vertices);
+  const NodeContours contours(mesh, bvh);
+  ASSERT_TRUE(contours.has_single_loop(0));
+  ASSERT_EQ(contours.loop(0).size(), 606u);
+  Positions x1 = strip.vertices;
+  x1.col(0).array() += 0.2;
+  x1.col(2).array() += 0.1;
+  EXPECT_TRUE(contour_stays_simple(contours.loop(0), strip.vertices, x1, Vec3::UnitZ()));
+  // The far side, apart from its ends, sinks through the near one: every corner stays
+  // simple, only the sweep over non-adjacent edges can see it.
+  Positions sunk = x1;
+  for (Index v = 0; v < sunk.rows(); ++v) {
+    const double x = strip.vertices(v, 0);
+    if (strip.vertices(v, 1) > 0.029 && x > 0.5 && x < 2.5) sunk(v, 1) = -0.02;
+  }
+  EXPECT_FALSE(contour_stays_simple(contours.loop(0), strip.vertices, sunk, Vec3::UnitZ()));
+  // One vertex of a long side slides back past its neighbour: a corner folds back.
+  for (const Index along : {7, 150, 290}) {
+    Positions folded = x1;
+    for (Index v = 0; v < folded.rows(); ++v) {
+      if (strip.vertices(v, 1) == 0 && std::abs(strip.vertices(v, 0) - 0.01 * along) < 1e-9) {
+        folded(v, 0) -= 0.015;
+      }
+    }
+    EXPECT_FALSE(contour_stays_simple(contours.loop(0), strip.vertices, folded, Vec3::UnitZ()))
+        << along;
+  }
+  // The ribbon's ends overlap in projection whichever way the pitch goes.
+  const Ribbon ribbon = make_ribbon(400, 0.02, 0.03);
+  const TriangleMesh ribbon_mesh(static_cast<Index>(ribbon.mesh.vertices.rows()),
+                                 ribbon.mesh.faces);
+  const MeshBvh ribbon_bvh(ribbon_mesh, ribbon.mesh.vertices);
+  const NodeContours ribbon_contours(ribbon_mesh, ribbon_bvh);
+  ASSERT_TRUE(ribbon_contours.has_single_loop(0));
+  ASSERT_GE(ribbon_contours.loop(0).size(), 512u);
+  EXPECT_FALSE(contour_stays_simple(ribbon_contours.loop(0), ribbon.mesh.vertices, ribbon.x1,
+                                    Vec3::UnitZ()));
+}
+
 TEST(NormalConeCulling, ContourTestIsWhatKeepsTheRibbonCollisions) {
   const Ribbon ribbon = make_ribbon(80, 0.02, -0.02);
   const TriangleMesh mesh(static_cast<Index>(ribbon.mesh.vertices.rows()), ribbon.mesh.faces);

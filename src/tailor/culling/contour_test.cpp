@@ -2,8 +2,13 @@
 
 #include "tailor/culling/certified_bernstein.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <limits>
 #include <vector>
 
@@ -50,7 +55,10 @@ constexpr int kMaxDepth = 3;
 // Consecutive edges u = (w[i-1], w[i]) and v = (w[i], w[i+1]) meet only at w[i] while
 // they turn strictly one way, or while their projected dot product stays positive.
 bool corner_stays_simple(const Moving& u, const Moving& v, const Vec3& a) {
-  const Quadratic turn = orientation(u, v, a), dot = projected_dot(u, v, a);
+  const Quadratic dot = projected_dot(u, v, a);
+  // Most corners of a boundary are nearly straight: the dot alone settles them.
+  if (dot.sign_on(0, 1) > 0) return true;
+  const Quadratic turn = orientation(u, v, a);
   return holds_piecewise(
       [&](double lo, double hi) { return dot.sign_on(lo, hi) > 0 || turn.sign_on(lo, hi) != 0; },
       kMaxDepth);
@@ -91,8 +99,39 @@ bool certainly_disjoint(const Positions& x0, const Positions& x1, Index p, Index
 
 struct Box2 {
   double min_x, max_x, min_y, max_y;
+  double min_sum, max_sum;  // of x + y
   Index edge;
 };
+
+// Loops of fewer edges are tested by the calling task alone; a longer loop (the root of a
+// mesh that the cone certifies whole: 3,000 edges at a million triangles) is the only work
+// of its traversal, so its tests run in parallel.
+constexpr Index kParallelEdges = 512;
+constexpr Index kEdgesPerTask = 128;
+
+// Whether `holds(i)` for every i in [0, n): in parallel for long loops, stopping soon after
+// the first failure. The answer does not depend on the order.
+template <class Holds>
+bool holds_for_all(Index n, const Holds& holds) {
+  if (n < kParallelEdges) {
+    for (Index i = 0; i < n; ++i) {
+      if (!holds(i)) return false;
+    }
+    return true;
+  }
+  std::atomic<bool> all{true};
+  tbb::parallel_for(tbb::blocked_range<Index>(0, n, kEdgesPerTask),
+                    [&](const tbb::blocked_range<Index>& range) {
+                      for (Index i = range.begin(); i < range.end(); ++i) {
+                        if (!all.load(std::memory_order_relaxed)) return;
+                        if (!holds(i)) {
+                          all.store(false, std::memory_order_relaxed);
+                          return;
+                        }
+                      }
+                    });
+  return all.load();
+}
 
 }  // namespace
 
@@ -102,51 +141,65 @@ bool contour_stays_simple(std::span<const Index> loop, const Positions& x0, cons
   if (m < 3) return false;
   auto at = [&](Index i) { return loop[static_cast<std::size_t>((i % m + m) % m)]; };
 
-  // Consecutive edges meet only at their shared vertex: they never fold back onto each
-  // other (projected dot stays positive) or they turn strictly one way throughout.
-  for (Index i = 0; i < m; ++i) {
-    if (!corner_stays_simple(difference(x0, x1, at(i - 1), at(i)),
-                             difference(x0, x1, at(i), at(i + 1)), axis)) {
-      return false;
-    }
-  }
-  if (m == 3) return true;  // a triangle has no non-adjacent edge pair
-
-  // Non-adjacent edges: prune with swept boxes in a plane normal to the axis, then
-  // certify each remaining pair. The boxes are only a filter, padded for the rounding
-  // of the approximate basis; the certificate uses the axis itself.
+  // Each edge's box in a plane normal to the axis, to prune the non-adjacent pairs below.
+  // The boxes are only a filter, padded for the rounding of the approximate basis; the
+  // certificates use the axis itself.
   const Vec3 e1 = axis.unitOrthogonal();
   const Vec3 e2 = axis.normalized().cross(e1);
   const Vec3 origin = x0.row(loop[0]);
   std::vector<Box2> boxes(static_cast<std::size_t>(m));
-  double extent = 0;
-  for (Index i = 0; i < m; ++i) {
-    Box2 box{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
-             std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), i};
+  std::vector<double> reach(static_cast<std::size_t>(m));  // squared, farthest corner from origin
+
+  // One pass over the edges builds the boxes and tests the corners: consecutive edges meet
+  // only at their shared vertex, as they never fold back onto each other (projected dot
+  // stays positive) or they turn strictly one way throughout.
+  const bool corners_simple = holds_for_all(m, [&](Index i) {
+    Box2 box{std::numeric_limits<double>::infinity(),
+             -std::numeric_limits<double>::infinity(),
+             std::numeric_limits<double>::infinity(),
+             -std::numeric_limits<double>::infinity(),
+             0,
+             0,
+             i};
+    double far = 0;
     for (Index vertex : {at(i), at(i + 1)}) {
       for (const Positions* x : {&x0, &x1}) {
         const Vec3 d = Vec3(x->row(vertex)) - origin;
         const double px = d.dot(e1), py = d.dot(e2);
         box.min_x = std::min(box.min_x, px), box.max_x = std::max(box.max_x, px);
         box.min_y = std::min(box.min_y, py), box.max_y = std::max(box.max_y, py);
-        extent = std::max(extent, d.norm());
+        far = std::max(far, d.squaredNorm());
       }
     }
+    box.min_sum = box.min_x + box.min_y, box.max_sum = box.max_x + box.max_y;
     boxes[static_cast<std::size_t>(i)] = box;
-  }
-  const double pad = 1e-9 * extent;
-  std::sort(boxes.begin(), boxes.end(),
-            [](const Box2& a, const Box2& b) { return a.min_x < b.min_x; });
-  for (std::size_t i = 0; i < boxes.size(); ++i) {
-    for (std::size_t j = i + 1; j < boxes.size() && boxes[j].min_x <= boxes[i].max_x + pad; ++j) {
+    reach[static_cast<std::size_t>(i)] = far;
+    return corner_stays_simple(difference(x0, x1, at(i - 1), at(i)),
+                               difference(x0, x1, at(i), at(i + 1)), axis);
+  });
+  if (!corners_simple) return false;
+  if (m == 3) return true;  // a triangle has no non-adjacent edge pair
+
+  // Sweep along x + y, not x: a mesh's straight boundaries usually run along a coordinate
+  // axis, and all the boxes of such a side would overlap in x. Boxes that overlap within
+  // `pad` in x and in y overlap within 2·pad in x + y (3·pad covers the sums' rounding).
+  const double pad = 1e-9 * std::sqrt(*std::max_element(reach.begin(), reach.end()));
+  // Ties may sort either way: both orders check the same pairs.
+  tbb::parallel_sort(boxes.begin(), boxes.end(),
+                     [](const Box2& a, const Box2& b) { return a.min_sum < b.min_sum; });
+  return holds_for_all(m, [&](Index position) {
+    const auto i = static_cast<std::size_t>(position);
+    for (std::size_t j = i + 1; j < boxes.size() && boxes[j].min_sum <= boxes[i].max_sum + 3 * pad;
+         ++j) {
+      if (boxes[j].min_x > boxes[i].max_x + pad || boxes[i].min_x > boxes[j].max_x + pad) continue;
       if (boxes[j].min_y > boxes[i].max_y + pad || boxes[i].min_y > boxes[j].max_y + pad) continue;
       const Index a = boxes[i].edge, b = boxes[j].edge;
       const Index gap = std::abs(a - b);
       if (gap == 1 || gap == m - 1) continue;  // adjacent: checked above
       if (!certainly_disjoint(x0, x1, at(a), at(a + 1), at(b), at(b + 1), axis)) return false;
     }
-  }
-  return true;
+    return true;
+  });
 }
 
 }  // namespace tailor
