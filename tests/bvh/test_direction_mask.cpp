@@ -149,8 +149,8 @@ TEST(DirectionMask, DegenerateOverflowingOrBatchedTrianglesAreHandled) {
 TEST(DirectionMask, Sse2Avx2AndAvx512PathsAgreeBitForBit) {
   // Batches of 1-16 random triangles over many scales (across both ends of the float
   // range) and motions (near-degenerate and overflowing ones too): the SSE2, AVX2 and
-  // AVX-512 paths of the dispatch give the same mask, which is the and of the
-  // single-triangle masks.
+  // AVX-512 paths of the dispatch give the same mask in every lane, which is that
+  // triangle's own mask, and the batch's mask is their and.
   if (!detail::direction_mask_has_avx2()) GTEST_SKIP() << "no AVX2 on this processor";
   const bool avx512 = detail::direction_mask_has_avx512();
   if (!avx512) std::cout << "no AVX-512 on this processor: its path not compared\n";
@@ -163,6 +163,7 @@ TEST(DirectionMask, Sse2Avx2AndAvx512PathsAgreeBitForBit) {
     const double motion = trial % 3 == 0 ? 1e-3 : trial % 3 == 1 ? 0.3 : 2.0;
     MovingTriangleBatch batch;
     DirectionMask expected = kAllDirections;
+    LaneMasks own;
     const int count = count_of(rng);
     const Vec3 shared = Vec3(uniform(rng), uniform(rng), 1);  // a common tilt: masks survive
     for (int i = 0; i < count; ++i) {
@@ -176,16 +177,25 @@ TEST(DirectionMask, Sse2Avx2AndAvx512PathsAgreeBitForBit) {
         c[3 + k] = c[k] + motion * scale * Vec3(uniform(rng), uniform(rng), uniform(rng));
       }
       batch.add(c[0].data(), c[1].data(), c[2].data(), c[3].data(), c[4].data(), c[5].data());
-      expected &= direction_mask(c[0], c[1], c[2], c[3], c[4], c[5]);
+      own[static_cast<std::size_t>(i)] = direction_mask(c[0], c[1], c[2], c[3], c[4], c[5]);
+      expected &= own[static_cast<std::size_t>(i)];
     }
     batch.pad();
-    const DirectionMask sse2 = detail::direction_mask_sse2(batch);
-    ASSERT_EQ(sse2, detail::direction_mask_avx2(batch)) << "trial " << trial;
-    if (avx512) {
-      ASSERT_EQ(sse2, detail::direction_mask_avx512(batch)) << "trial " << trial;
+    LaneMasks sse2, avx2, avx512_masks;
+    detail::lane_masks_sse2(batch, sse2);
+    detail::lane_masks_avx2(batch, avx2);
+    if (avx512) detail::lane_masks_avx512(batch, avx512_masks);
+    for (int i = 0; i < count; ++i) {
+      const auto lane = static_cast<std::size_t>(i);
+      ASSERT_EQ(sse2[lane], own[lane]) << "trial " << trial << " lane " << i;
+      ASSERT_EQ(avx2[lane], own[lane]) << "trial " << trial << " lane " << i;
+      if (avx512) {
+        ASSERT_EQ(avx512_masks[lane], own[lane]) << "trial " << trial << " lane " << i;
+      }
     }
-    ASSERT_EQ(sse2, expected) << "trial " << trial;
-    nonzero += sse2 != 0;
+    ASSERT_EQ(direction_mask(batch), expected) << "trial " << trial;
+    ASSERT_EQ(and_of_masks(sse2, 0, count), expected) << "trial " << trial;
+    nonzero += expected != 0;
   }
   EXPECT_GT(nonzero, 500);  // the comparison is not only of empty masks
 }
@@ -211,12 +221,17 @@ TEST(DirectionMask, LanesPastThePaddedBatchAreNeverRead) {
     }
     batch.pad();
     ASSERT_NE(expected & (DirectionMask{1} << 4), 0u);
-    EXPECT_EQ(detail::direction_mask_sse2(batch), expected) << count << " triangles";
+    const auto and_of_path = [&](void (*path)(const MovingTriangleBatch&, LaneMasks&)) {
+      LaneMasks masks;
+      path(batch, masks);
+      return and_of_masks(masks, 0, count);
+    };
+    EXPECT_EQ(and_of_path(detail::lane_masks_sse2), expected) << count << " triangles";
     if (detail::direction_mask_has_avx2()) {
-      EXPECT_EQ(detail::direction_mask_avx2(batch), expected) << count << " triangles";
+      EXPECT_EQ(and_of_path(detail::lane_masks_avx2), expected) << count << " triangles";
     }
     if (detail::direction_mask_has_avx512()) {
-      EXPECT_EQ(detail::direction_mask_avx512(batch), expected) << count << " triangles";
+      EXPECT_EQ(and_of_path(detail::lane_masks_avx512), expected) << count << " triangles";
     }
   }
 }

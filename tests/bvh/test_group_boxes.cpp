@@ -1,7 +1,8 @@
 // The boxes of a group's nodes: on random pre-order trees of 1-16 leaves, every leaf gets
 // its lane's bounds and every inner node the union of its children's, computed here by
 // recursion over the tree; the SSE2 and AVX2 paths write the same boxes and leave the rest
-// of each record as it was.
+// of each record as it was. A group may start at any lane of the batch (a batch holds
+// several small groups).
 
 #include <gtest/gtest.h>
 
@@ -63,8 +64,10 @@ TEST(GroupBoxes, EveryNodeIsItsLeafOrTheUnionOfItsChildren) {
       }
     }
     const int count = count_of(rng);
+    const int first_lane =
+        std::uniform_int_distribution<int>(0, MovingTriangleBatch::kCapacity - count)(rng);
     Tree tree;
-    int lane = 0;
+    int lane = first_lane;
     grow(rng, count, lane, bounds, tree);
     ASSERT_EQ(static_cast<int>(tree.expected.size()), 2 * count - 1);
 
@@ -73,7 +76,7 @@ TEST(GroupBoxes, EveryNodeIsItsLeafOrTheUnionOfItsChildren) {
       std::vector<Record> records(tree.expected.size() + 1);
       for (Record& r : records) r.rest[0] = r.rest[1] = kUntouched;
       (use_avx2 ? detail::write_group_boxes_avx2 : detail::write_group_boxes_sse2)(
-          bounds, tree.leaf_bits, count, &records[0].box, sizeof(Record));
+          bounds, first_lane, tree.leaf_bits, count, &records[0].box, sizeof(Record));
       for (std::size_t node = 0; node < tree.expected.size(); ++node) {
         ASSERT_EQ(records[node].box.min, tree.expected[node].min)
             << "trial " << trial << " node " << node << (use_avx2 ? " (AVX2)" : "");

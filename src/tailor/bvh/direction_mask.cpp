@@ -96,21 +96,18 @@ template <int F>
   return mask;
 }
 
-// The and of the lanes' masks, as a scalar: no vector crosses the call from the functions
-// built for wider instruction sets.
+// Stores the lanes' masks (through memory: no vector crosses the call from the functions
+// built for wider instruction sets).
 template <int F>
-[[gnu::always_inline]] inline DirectionMask and_of_lane_masks(const EdgeLanes<F>& e) {
+[[gnu::always_inline]] inline void store_lane_masks(const EdgeLanes<F>& e, DirectionMask* out) {
   const typename FloatVectors<F>::Bits bits = float_lane_masks<F>(e);
-  std::int32_t all = static_cast<std::int32_t>(kAllDirections);
-  for (int i = 0; i < F; ++i) all &= bits[i];
-  return static_cast<DirectionMask>(all);
+  for (int i = 0; i < F; ++i) out[i] = static_cast<DirectionMask>(bits[i]);
 }
 
 // SSE2: four lanes (two doubles per register: two differences, rounded and joined) at a
 // time; a padded batch has a multiple of four lanes.
-DirectionMask batch_mask_sse2(const MovingTriangleBatch& batch) {
+void batch_masks_sse2(const MovingTriangleBatch& batch, LaneMasks& masks) {
   const auto& c = batch.coordinate;
-  DirectionMask all = kAllDirections;
   for (int first = 0; first < batch.padded_count(); first += 4) {
     EdgeLanes<4> e;
     for (int k = 0; k < 12; ++k) {
@@ -120,17 +117,15 @@ DirectionMask batch_mask_sse2(const MovingTriangleBatch& batch) {
       const __m128 high = _mm_cvtpd_ps(_mm_sub_pd(_mm_load_pd(to + 2), _mm_load_pd(from + 2)));
       e.coordinate[k] = (FloatVectors<4>::Lanes)_mm_movelh_ps(low, high);
     }
-    all &= and_of_lane_masks<4>(e);
+    store_lane_masks<4>(e, masks.data() + first);
   }
-  return all;
 }
 
 // AVX2: eight lanes at a time. When only four of them are in the padded batch, the other
-// four repeat them (the and of a mask with itself changes nothing).
-[[gnu::target("avx2")]] DirectionMask batch_mask_avx2(const MovingTriangleBatch& batch) {
+// four repeat them (their masks land past the padded batch).
+[[gnu::target("avx2")]] void batch_masks_avx2(const MovingTriangleBatch& batch, LaneMasks& masks) {
   const auto& c = batch.coordinate;
   const int lanes = batch.padded_count();
-  DirectionMask all = kAllDirections;
   for (int first = 0; first < lanes; first += 8) {
     const bool whole = first + 8 <= lanes;
     EdgeLanes<8> e;
@@ -143,9 +138,8 @@ DirectionMask batch_mask_sse2(const MovingTriangleBatch& batch) {
                 : low;
       e.coordinate[k] = (FloatVectors<8>::Lanes)_mm256_set_m128(high, low);
     }
-    all &= and_of_lane_masks<8>(e);
+    store_lane_masks<8>(e, masks.data() + first);
   }
-  return all;
 }
 
 // Lanes 0-7 of a row; lanes 0-3 twice when only they are in the batch. (A generic
@@ -159,10 +153,9 @@ DirectionMask batch_mask_sse2(const MovingTriangleBatch& batch) {
 
 // AVX-512: sixteen lanes, the whole batch, at once. Lanes past the padded batch are not
 // read: they take the doubles of lanes already in it (a batch of four lanes is broadcast
-// to eight; lanes 8 + i past it keep those of lane i, by a masked load), so they repeat
-// masks already in the and.
-[[gnu::target("avx512f,avx512dq,avx2")]] DirectionMask batch_mask_avx512(
-    const MovingTriangleBatch& batch) {
+// to eight; lanes 8 + i past it keep those of lane i, by a masked load).
+[[gnu::target("avx512f,avx512dq,avx2")]] void batch_masks_avx512(const MovingTriangleBatch& batch,
+                                                                 LaneMasks& masks) {
   static_assert(MovingTriangleBatch::kCapacity == 16, "one sixteen-lane pass per batch");
   const auto& c = batch.coordinate;
   const int lanes = batch.padded_count();
@@ -185,23 +178,23 @@ DirectionMask batch_mask_sse2(const MovingTriangleBatch& batch) {
     e.coordinate[k] =
         __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
   }
-  return and_of_lane_masks<16>(e);
+  store_lane_masks<16>(e, masks.data());
 }
 
 }  // namespace
 
 namespace detail {
 
-DirectionMask direction_mask_sse2(const MovingTriangleBatch& batch) {
-  return batch_mask_sse2(batch);
+void lane_masks_sse2(const MovingTriangleBatch& batch, LaneMasks& masks) {
+  batch_masks_sse2(batch, masks);
 }
 
-DirectionMask direction_mask_avx2(const MovingTriangleBatch& batch) {
-  return batch_mask_avx2(batch);
+void lane_masks_avx2(const MovingTriangleBatch& batch, LaneMasks& masks) {
+  batch_masks_avx2(batch, masks);
 }
 
-DirectionMask direction_mask_avx512(const MovingTriangleBatch& batch) {
-  return batch_mask_avx512(batch);
+void lane_masks_avx512(const MovingTriangleBatch& batch, LaneMasks& masks) {
+  batch_masks_avx512(batch, masks);
 }
 
 bool direction_mask_has_avx512() {
@@ -228,11 +221,27 @@ Vec3 mask_axis(DirectionMask mask) {
   return sum;
 }
 
+void lane_masks(const MovingTriangleBatch& batch, LaneMasks& masks) {
+  if (batch.count == 0) return;
+  if (lanes::has_avx512()) {
+    detail::lane_masks_avx512(batch, masks);
+  } else if (lanes::has_avx2()) {
+    detail::lane_masks_avx2(batch, masks);
+  } else {
+    detail::lane_masks_sse2(batch, masks);
+  }
+}
+
+DirectionMask and_of_masks(const LaneMasks& masks, int begin, int end) {
+  DirectionMask all = kAllDirections;
+  for (int i = begin; i < end; ++i) all &= masks[static_cast<std::size_t>(i)];
+  return all;
+}
+
 DirectionMask direction_mask(const MovingTriangleBatch& batch) {
-  if (batch.count == 0) return kAllDirections;
-  if (lanes::has_avx512()) return detail::direction_mask_avx512(batch);
-  return lanes::has_avx2() ? detail::direction_mask_avx2(batch)
-                           : detail::direction_mask_sse2(batch);
+  LaneMasks masks;
+  lane_masks(batch, masks);
+  return and_of_masks(masks, 0, batch.count);
 }
 
 DirectionMask direction_mask(const Vec3& a0, const Vec3& b0, const Vec3& c0, const Vec3& a1,

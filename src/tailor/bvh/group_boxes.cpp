@@ -17,12 +17,13 @@ FloatBox& box_at(FloatBox* first, std::size_t stride, int node) {
 // A box as one vector (min x, y, z, -max x, y, z, -, -): the union of two is their
 // minimum. Each record's 32 bytes are written at once, the eight after the box with the
 // value they held.
-[[gnu::target("avx2")]] void one_vector_per_box(const BatchBounds& bounds, std::uint32_t leaf_bits,
-                                                int count, FloatBox* first, std::size_t stride) {
+[[gnu::target("avx2")]] void one_vector_per_box(const BatchBounds& bounds, int first_lane,
+                                                std::uint32_t leaf_bits, int count, FloatBox* first,
+                                                std::size_t stride) {
   __m256 pending[MovingTriangleBatch::kCapacity];
   int top = 0;
   const __m256 negate_max = _mm256_setr_ps(0.0f, 0.0f, 0.0f, -0.0f, -0.0f, -0.0f, 0.0f, 0.0f);
-  int lane = count - 1;
+  int lane = first_lane + count - 1;
   for (int node = 2 * count - 2; node >= 0; --node) {
     __m256 box;
     if ((leaf_bits >> node) & 1) {
@@ -45,12 +46,12 @@ FloatBox& box_at(FloatBox* first, std::size_t stride, int node) {
 
 namespace detail {
 
-void write_group_boxes_sse2(const BatchBounds& bounds, std::uint32_t leaf_bits, int count,
-                            FloatBox* first, std::size_t stride) {
+void write_group_boxes_sse2(const BatchBounds& bounds, int first_lane, std::uint32_t leaf_bits,
+                            int count, FloatBox* first, std::size_t stride) {
   // Two vectors per box, (min x, y, z, -) and (-max x, y, z, -): a union is two minima.
   __m128 pending_min[MovingTriangleBatch::kCapacity], pending_max[MovingTriangleBatch::kCapacity];
   int top = 0;
-  int lane = count - 1;
+  int lane = first_lane + count - 1;
   for (int node = 2 * count - 2; node >= 0; --node) {
     __m128 low, negated_high;
     if ((leaf_bits >> node) & 1) {
@@ -74,19 +75,19 @@ void write_group_boxes_sse2(const BatchBounds& bounds, std::uint32_t leaf_bits, 
   }
 }
 
-void write_group_boxes_avx2(const BatchBounds& bounds, std::uint32_t leaf_bits, int count,
-                            FloatBox* first, std::size_t stride) {
-  one_vector_per_box(bounds, leaf_bits, count, first, stride);
+void write_group_boxes_avx2(const BatchBounds& bounds, int first_lane, std::uint32_t leaf_bits,
+                            int count, FloatBox* first, std::size_t stride) {
+  one_vector_per_box(bounds, first_lane, leaf_bits, count, first, stride);
 }
 
 }  // namespace detail
 
-void write_group_boxes(const BatchBounds& bounds, std::uint32_t leaf_bits, int count,
-                       FloatBox* first, std::size_t stride) {
+void write_group_boxes(const BatchBounds& bounds, int first_lane, std::uint32_t leaf_bits,
+                       int count, FloatBox* first, std::size_t stride) {
   if (lanes::has_avx2()) {
-    detail::write_group_boxes_avx2(bounds, leaf_bits, count, first, stride);
+    detail::write_group_boxes_avx2(bounds, first_lane, leaf_bits, count, first, stride);
   } else {
-    detail::write_group_boxes_sse2(bounds, leaf_bits, count, first, stride);
+    detail::write_group_boxes_sse2(bounds, first_lane, leaf_bits, count, first, stride);
   }
 }
 

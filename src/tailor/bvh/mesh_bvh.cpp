@@ -98,8 +98,7 @@ MeshBvh::MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector
       for (Index member = node; member < node + 2 * size(node) - 1; ++member) {
         if (is_leaf(member)) leaf_bits |= std::uint32_t{1} << (member - node);
       }
-      m_groups.push_back({node, static_cast<Index>(m_leaf_vertices.size()),
-                          static_cast<Index>(m_groups.size()), slot, leaf_bits});
+      m_groups.push_back({node, static_cast<Index>(m_leaf_vertices.size()), slot, leaf_bits});
     } else if (merges) {
       m_merges.push_back({node, slot, -1, -1});
     }
@@ -141,8 +140,17 @@ void MeshBvh::refit(const Positions& x0, const Positions& x1, bool with_directio
   if (m_nodes.empty()) return;
   tbb::parallel_for(std::size_t{0}, m_tasks.size(), [&](std::size_t t) {
     const Task& task = m_tasks[t];
-    for (Index g = task.groups_begin; g < task.groups_end; ++g) {
-      refit_group(m_groups[g], x0, x1, with_directions);
+    // Consecutive groups share a batch while their faces fit: the kernels cost about as
+    // much for a few lanes as for a whole batch, and a sixth of the crumpling cloth's
+    // groups hold a single face (a node of 17 faces splits into 16 and 1).
+    for (Index first = task.groups_begin; first < task.groups_end;) {
+      Index end = first + 1;
+      Index faces = group_faces(first);
+      while (end < task.groups_end && faces + group_faces(end) <= MovingTriangleBatch::kCapacity) {
+        faces += group_faces(end++);
+      }
+      refit_groups(first, end, faces, x0, x1, with_directions);
+      first = end;
     }
     for (Index k = task.merges_end - 1; k >= task.merges_begin; --k) {
       merge(m_merges[k], with_directions);
@@ -151,49 +159,63 @@ void MeshBvh::refit(const Positions& x0, const Positions& x1, bool with_directio
   for (Index k : m_top_merges) merge(m_merges[k], with_directions);
 }
 
-void MeshBvh::refit_group(const Group& group, const Positions& x0, const Positions& x1,
-                          bool with_directions) {
-  const Index count = size(group.root);
+Index MeshBvh::group_faces(Index g) const {
+  const Index next = g + 1 < static_cast<Index>(m_groups.size())
+                         ? m_groups[static_cast<std::size_t>(g) + 1].first_leaf
+                         : static_cast<Index>(m_leaf_vertices.size());
+  return next - m_groups[static_cast<std::size_t>(g)].first_leaf;
+}
+
+void MeshBvh::refit_groups(Index first, Index end, Index faces, const Positions& x0,
+                           const Positions& x1, bool with_directions) {
   const double* p0 = x0.data();
   const double* p1 = x1.data();
   const Index leaves = static_cast<Index>(m_leaf_vertices.size());
-  // The corners of the group's faces in structure-of-arrays form (leaves in increasing id
-  // order), from which the boxes and the mask are computed in vectorisable loops.
+  const Index groups = static_cast<Index>(m_groups.size());
+  const Index first_leaf = m_groups[first].first_leaf;
+  // The corners of the groups' faces in structure-of-arrays form (leaves in increasing id
+  // order), from which the boxes and the masks are computed in vectorisable loops.
   MovingTriangleBatch batch;
-  // The node records of a group ahead, which will be written: 64 bytes per face, not in
-  // cache. (Its face count from m_groups: reading its root record would wait for memory.)
-  if (const Index ahead = group.index + kPrefetchGroups;
-      ahead + 1 < static_cast<Index>(m_groups.size())) {
-    const Index faces = m_groups[ahead + 1].first_leaf - m_groups[ahead].first_leaf;
-    const Node* first = &m_nodes[m_groups[ahead].root];
-    const char* end = reinterpret_cast<const char*>(first + 2 * faces - 1);
-    for (const char* line = reinterpret_cast<const char*>(first); line < end; line += 64) {
+  // The node records of the groups kPrefetchGroups ahead, which will be written: 64 bytes
+  // per face, not in cache. (Their face counts from m_groups: reading a root record would
+  // wait for memory.)
+  for (Index ahead = first + kPrefetchGroups; ahead < std::min(end + kPrefetchGroups, groups);
+       ++ahead) {
+    const Node* record = &m_nodes[m_groups[ahead].root];
+    const char* stop = reinterpret_cast<const char*>(record + 2 * group_faces(ahead) - 1);
+    for (const char* line = reinterpret_cast<const char*>(record); line < stop; line += 64) {
       __builtin_prefetch(line, 1);
     }
   }
   // The corners are gathered in leaf order, which the hardware prefetcher cannot follow:
   // without this the refit waits on memory (1M-face cloth: 42 ms against 33 ms).
-  const Index prefetch_end = std::min(leaves, group.first_leaf + count + kPrefetchLeaves);
-  for (Index ahead = group.first_leaf + kPrefetchLeaves; ahead < prefetch_end; ++ahead) {
+  const Index prefetch_end = std::min(leaves, first_leaf + faces + kPrefetchLeaves);
+  for (Index ahead = first_leaf + kPrefetchLeaves; ahead < prefetch_end; ++ahead) {
     for (const Index u : m_leaf_vertices[ahead]) {
       __builtin_prefetch(p0 + 3 * u);
       __builtin_prefetch(p1 + 3 * u);
     }
   }
-  gather_batch(
-      p0, p1,
-      std::span(m_leaf_vertices)
-          .subspan(static_cast<std::size_t>(group.first_leaf), static_cast<std::size_t>(count)),
-      batch);
+  gather_batch(p0, p1,
+               std::span(m_leaf_vertices)
+                   .subspan(static_cast<std::size_t>(first_leaf), static_cast<std::size_t>(faces)),
+               batch);
   // Leaf boxes: per coordinate and lane, the six corners' extremes, rounded outward.
   BatchBounds bounds;
   batch_bounds(batch, bounds);
-  // The group's nodes are the id range [root, root + 2·count - 1) (pre-order): its leaves
-  // in increasing id order are the batch's lanes.
+  LaneMasks masks;
+  if (with_directions) lane_masks(batch, masks);
+  // Each group's nodes are the id range [root, root + 2·count - 1) (pre-order): its leaves
+  // in increasing id order are consecutive lanes of the batch.
   static_assert(sizeof(Node) >= 32, "write_group_boxes() writes 32 bytes of each record");
-  write_group_boxes(bounds, group.leaf_bits, static_cast<int>(count), &m_nodes[group.root].box,
-                    sizeof(Node));
-  if (with_directions) m_masks[group.mask_slot] = tailor::direction_mask(batch);
+  int lane = 0;
+  for (Index g = first; g < end; ++g) {
+    const Group& group = m_groups[g];
+    const int count = static_cast<int>(group_faces(g));
+    write_group_boxes(bounds, lane, group.leaf_bits, count, &m_nodes[group.root].box, sizeof(Node));
+    if (with_directions) m_masks[group.mask_slot] = and_of_masks(masks, lane, lane + count);
+    lane += count;
+  }
 }
 
 void MeshBvh::join_children(Index node) {

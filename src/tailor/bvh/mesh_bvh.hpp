@@ -96,7 +96,6 @@ class MeshBvh {
   };
   struct Group {
     Index root, first_leaf;  // its leaves are first_leaf, first_leaf + 1, ... (leaf order)
-    Index index;             // its position in m_groups
     Index mask_slot;         // mask_index(root), so that the refit counts no bits
     // Bit i: node root + i is a leaf (a group has at most 2·kGroupFaces - 3 nodes), so
     // that the refit visits leaves and inner nodes without a branch per node.
@@ -111,8 +110,11 @@ class MeshBvh {
   struct Task {
     Index groups_begin, groups_end, merges_begin, merges_end;
   };
-  void refit_group(const Group& group, const Positions& x0, const Positions& x1,
-                   bool with_directions);
+  // The faces of group g (from the first leaves of g and g + 1: no node record is read).
+  Index group_faces(Index g) const;
+  // Refits groups [first, end), of `faces` faces in all (at most a batch), from one batch.
+  void refit_groups(Index first, Index end, Index faces, const Positions& x0, const Positions& x1,
+                    bool with_directions);
   void merge(const Merge& merge, bool with_directions);
   // Sets an inner node's box to the union of its children's.
   void join_children(Index node);
