@@ -25,30 +25,31 @@ constexpr Index kPrefetchGroups = 2;
 }  // namespace
 
 MeshBvh::MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector<Index> faces)
-    : m_mesh(&mesh), m_faces(std::move(faces)) {
-  if (m_faces.empty()) {
-    m_faces.resize(static_cast<std::size_t>(mesh.num_faces()));
-    std::iota(m_faces.begin(), m_faces.end(), 0);
+    : m_mesh(&mesh) {
+  if (faces.empty()) {
+    faces.resize(static_cast<std::size_t>(mesh.num_faces()));
+    std::iota(faces.begin(), faces.end(), 0);
   }
-  std::vector<Vec3> centers(m_faces.size());
-  for (std::size_t p = 0; p < m_faces.size(); ++p) {
-    const auto v = mesh.faces().row(m_faces[p]);
+  std::vector<Vec3> centers(faces.size());
+  for (std::size_t p = 0; p < faces.size(); ++p) {
+    const auto v = mesh.faces().row(faces[p]);
     const Eigen::Array3d low =
         x_build.row(v[0]).array().min(x_build.row(v[1]).array()).min(x_build.row(v[2]).array());
     const Eigen::Array3d high =
         x_build.row(v[0]).array().max(x_build.row(v[1]).array()).max(x_build.row(v[2]).array());
     centers[p] = (0.5 * (low + high)).matrix();
   }
-  BvhLayout layout = build_surface_layout(mesh, m_faces, centers);
+  BvhLayout layout = build_surface_layout(mesh, faces, centers);
   centers = {};
   const Index n = layout.num_nodes();
   m_nodes.resize(static_cast<std::size_t>(n));
   for (Index node = 0; node < n; ++node) {
     m_nodes[node].count = layout.count[node];
     m_nodes[node].right_or_face =
-        layout.is_leaf(node) ? m_faces[layout.right[node]] : layout.right[node];
+        layout.is_leaf(node) ? faces[layout.right[node]] : layout.right[node];
   }
   layout = {};
+  faces = std::vector<Index>();  // the leaves keep their faces
 
   // Roles, top-down: merge nodes (>= kGroupFaces faces), group roots (the largest subtrees
   // below), task roots (the largest subtrees of at most kParallelGrain faces).
@@ -83,7 +84,7 @@ MeshBvh::MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector
   m_mask_bits.assign(words, 0);
   m_masks_before_word.assign(words, 0);
   Index slots = 0;
-  m_leaf_vertices.reserve(m_faces.size());
+  m_leaf_vertices.reserve(static_cast<std::size_t>(n + 1) / 2);
   for (Index node = 0; node < n; ++node) {
     const std::size_t word = static_cast<std::size_t>(node) >> 6;
     if ((node & 63) == 0) m_masks_before_word[word] = slots;

@@ -81,8 +81,6 @@ class MeshBvh {
     return m_masks_before_word[word] + std::popcount(m_mask_bits[word] & below);
   }
   Index num_masks() const { return static_cast<Index>(m_masks.size()); }
-  /// The faces the tree was built over, in the order given.
-  const std::vector<Index>& faces() const { return m_faces; }
 
  private:
   static constexpr Index kGroupFaces = 16;
@@ -120,7 +118,6 @@ class MeshBvh {
   void join_children(Index node);
 
   const TriangleMesh* m_mesh = nullptr;
-  std::vector<Index> m_faces;
   std::vector<Node> m_nodes;
   std::vector<std::uint64_t> m_mask_bits;  // bit `node`: the node keeps a mask
   std::vector<Index> m_masks_before_word;  // masks of the nodes below 64 · word
