@@ -20,25 +20,27 @@ FloatBox& box_at(FloatBox* first, std::size_t stride, int node) {
 [[gnu::target("avx2")]] void one_vector_per_box(const BatchBounds& bounds, int first_lane,
                                                 std::uint32_t leaf_bits, int count, FloatBox* first,
                                                 std::size_t stride) {
-  __m256 pending[MovingTriangleBatch::kCapacity];
-  int top = 0;
+  // The box just written stays in a register (`top`): the next inner node joins it with
+  // the box below it on the stack, so the chain of joins never waits on a store to the
+  // stack and its load back (that round trip was the kernel's critical path).
+  __m256 below[MovingTriangleBatch::kCapacity];
+  int depth = 0;  // boxes in `below`
+  __m256 top = _mm256_setzero_ps();
   const __m256 negate_max = _mm256_setr_ps(0.0f, 0.0f, 0.0f, -0.0f, -0.0f, -0.0f, 0.0f, 0.0f);
   int lane = first_lane + count - 1;
   for (int node = 2 * count - 2; node >= 0; --node) {
-    __m256 box;
     if ((leaf_bits >> node) & 1) {
-      box = _mm256_setr_ps(bounds.low[0][lane], bounds.low[1][lane], bounds.low[2][lane],
+      if (node != 2 * count - 2) below[depth++] = top;
+      top = _mm256_setr_ps(bounds.low[0][lane], bounds.low[1][lane], bounds.low[2][lane],
                            -bounds.high[0][lane], -bounds.high[1][lane], -bounds.high[2][lane],
                            0.0f, 0.0f);
       --lane;
     } else {
-      box = _mm256_min_ps(pending[top - 1], pending[top - 2]);
-      top -= 2;
+      top = _mm256_min_ps(top, below[--depth]);
     }
-    pending[top++] = box;
     auto* record = reinterpret_cast<float*>(&box_at(first, stride, node));
     _mm256_storeu_ps(
-        record, _mm256_blend_ps(_mm256_xor_ps(box, negate_max), _mm256_loadu_ps(record), 0xc0));
+        record, _mm256_blend_ps(_mm256_xor_ps(top, negate_max), _mm256_loadu_ps(record), 0xc0));
   }
 }
 
@@ -48,23 +50,24 @@ namespace detail {
 
 void write_group_boxes_sse2(const BatchBounds& bounds, int first_lane, std::uint32_t leaf_bits,
                             int count, FloatBox* first, std::size_t stride) {
-  // Two vectors per box, (min x, y, z, -) and (-max x, y, z, -): a union is two minima.
-  __m128 pending_min[MovingTriangleBatch::kCapacity], pending_max[MovingTriangleBatch::kCapacity];
-  int top = 0;
+  // Two vectors per box, (min x, y, z, -) and (-max x, y, z, -): a union is two minima. The
+  // box just written stays in registers, as in one_vector_per_box().
+  __m128 below_min[MovingTriangleBatch::kCapacity], below_max[MovingTriangleBatch::kCapacity];
+  int depth = 0;
+  __m128 low = _mm_setzero_ps(), negated_high = _mm_setzero_ps();
   int lane = first_lane + count - 1;
   for (int node = 2 * count - 2; node >= 0; --node) {
-    __m128 low, negated_high;
     if ((leaf_bits >> node) & 1) {
+      if (node != 2 * count - 2) below_min[depth] = low, below_max[depth] = negated_high, ++depth;
       low = _mm_setr_ps(bounds.low[0][lane], bounds.low[1][lane], bounds.low[2][lane], 0.0f);
       negated_high =
           _mm_setr_ps(-bounds.high[0][lane], -bounds.high[1][lane], -bounds.high[2][lane], 0.0f);
       --lane;
     } else {
-      low = _mm_min_ps(pending_min[top - 1], pending_min[top - 2]);
-      negated_high = _mm_min_ps(pending_max[top - 1], pending_max[top - 2]);
-      top -= 2;
+      --depth;
+      low = _mm_min_ps(low, below_min[depth]);
+      negated_high = _mm_min_ps(negated_high, below_max[depth]);
     }
-    pending_min[top] = low, pending_max[top] = negated_high, ++top;
     const __m128 high = _mm_xor_ps(negated_high, _mm_set1_ps(-0.0f));
     // (min x, y, z, max x) and (max y, z): the six floats of the box and nothing more.
     const __m128 z_x = _mm_shuffle_ps(low, high, _MM_SHUFFLE(0, 0, 2, 2));
