@@ -16,7 +16,6 @@
 #include "tailor/bvh/mesh_bvh.hpp"
 #include "tailor/culling/node_contours.hpp"
 #include "tailor/culling/triangle_pair.hpp"
-#include "tailor/geometry/page_allocator.hpp"
 #include "tailor/mesh/triangle_mesh.hpp"
 
 namespace tailor {
@@ -72,7 +71,7 @@ class CandidateTraversal {
     // block per thread, often of very different sizes, and the test per pair is costly
     // (radial view's moving edge planes), so whole blocks left one thread doing most of
     // the work. Then each block is compacted by its flags.
-    std::vector<Block*> used_blocks;
+    std::vector<std::vector<TrianglePair>*> used_blocks;
     for (ThreadOutput& out : m_outputs) {
       for (std::size_t b = 0; b < out.used; ++b) used_blocks.push_back(&out.blocks[b]);
     }
@@ -88,7 +87,7 @@ class CandidateTraversal {
       const auto b =
           static_cast<std::size_t>(std::upper_bound(first_chunk.begin(), first_chunk.end(), chunk) -
                                    first_chunk.begin() - 1);
-      const Block& block = *used_blocks[b];
+      const std::vector<TrianglePair>& block = *used_blocks[b];
       const std::size_t begin = (chunk - first_chunk[b]) * kCullChunk;
       const std::size_t end = std::min(block.size(), begin + kCullChunk);
       for (std::size_t i = begin; i < end; ++i) {
@@ -97,7 +96,7 @@ class CandidateTraversal {
     });
     tbb::combinable<std::int64_t> removed([] { return std::int64_t{0}; });
     tbb::parallel_for(std::size_t{0}, used_blocks.size(), [&](std::size_t b) {
-      Block& block = *used_blocks[b];
+      std::vector<TrianglePair>& block = *used_blocks[b];
       const std::uint8_t* flag = m_culled_flags.data() + first_flag[b];
       std::size_t kept = 0;
       for (std::size_t i = 0; i < block.size(); ++i) {
@@ -120,7 +119,7 @@ class CandidateTraversal {
     for (ThreadOutput& out : m_outputs) {
       for (std::size_t b = 0; b < out.used; ++b) {
         use(std::span<const TrianglePair>(out.blocks[b]));
-        Block().swap(out.blocks[b]);
+        std::vector<TrianglePair>().swap(out.blocks[b]);
       }
       out.used = 0;
     }
@@ -131,14 +130,13 @@ class CandidateTraversal {
   TraversalCounts counts() const;
 
  private:
-  // Pairs per block (256 KiB), mapped from the system (page_allocator.hpp).
+  // Pairs per block (256 KiB).
   static constexpr std::size_t kBlockPairs = std::size_t{1} << 15;
-  using Block = std::vector<TrianglePair, PageAllocator<TrianglePair>>;
   // Pairs per task of remove_if().
   static constexpr std::size_t kCullChunk = 256;
   struct ThreadOutput {
-    std::vector<Block> blocks;  // reserved to kBlockPairs each
-    std::size_t used = 0;       // blocks in use (the last may be partial)
+    std::vector<std::vector<TrianglePair>> blocks;  // reserved to kBlockPairs each
+    std::size_t used = 0;                           // blocks in use (the last may be partial)
     TraversalCounts counts;
     void push(TrianglePair pair) {
       if (used == 0 || blocks[used - 1].size() == kBlockPairs) {
