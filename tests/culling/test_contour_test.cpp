@@ -38,11 +38,22 @@ Ribbon make_ribbon(int segments, double pitch0, double pitch1) {
   return ribbon;
 }
 
+// A mesh with its BVH and the BVH's contours (built in place: each points to the former).
+struct Contoured {
+  TriangleMesh mesh;
+  MeshBvh bvh;
+  NodeContours contours;
+  explicit Contoured(const MeshData& data)
+      : mesh(static_cast<Index>(data.vertices.rows()), data.faces),
+        bvh(mesh, data.vertices),
+        contours(mesh, bvh) {}
+  Contoured(const Contoured&) = delete;
+};
+
 TEST(ContourTest, RigidlyMovingFlatPatchStaysSimple) {
   const MeshData grid = make_grid(6, 4, 1.0, 0.7);
-  const TriangleMesh mesh(static_cast<Index>(grid.vertices.rows()), grid.faces);
-  const MeshBvh bvh(mesh, grid.vertices);
-  const NodeContours contours(mesh, bvh);
+  const Contoured tree(grid);
+  const NodeContours& contours = tree.contours;
   ASSERT_TRUE(contours.has_single_loop(0));
   EXPECT_EQ(contours.loop(0).size(), 2u * (6 + 4));
   Positions x1 = grid.vertices;
@@ -54,21 +65,16 @@ TEST(ContourTest, RigidlyMovingFlatPatchStaysSimple) {
 }
 
 TEST(ContourTest, TubeHasNoSingleLoop) {
-  const MeshData tube = make_tube(5, 8, 0.3, 1.0);
-  const TriangleMesh mesh(static_cast<Index>(tube.vertices.rows()), tube.faces);
-  const MeshBvh bvh(mesh, tube.vertices);
-  const NodeContours contours(mesh, bvh);
-  EXPECT_FALSE(contours.has_single_loop(0));  // an annulus: two loops
+  const Contoured tube(make_tube(5, 8, 0.3, 1.0));
+  EXPECT_FALSE(tube.contours.has_single_loop(0));  // an annulus: two loops
 }
 
 TEST(ContourTest, OverlappingRibbonIsNotSimple) {
   const Ribbon ribbon = make_ribbon(60, 0.02, -0.02);
-  const TriangleMesh mesh(static_cast<Index>(ribbon.mesh.vertices.rows()), ribbon.mesh.faces);
-  const MeshBvh bvh(mesh, ribbon.mesh.vertices);
-  const NodeContours contours(mesh, bvh);
-  ASSERT_TRUE(contours.has_single_loop(0));
+  const Contoured tree(ribbon.mesh);
+  ASSERT_TRUE(tree.contours.has_single_loop(0));
   EXPECT_FALSE(
-      contour_stays_simple(contours.loop(0), ribbon.mesh.vertices, ribbon.x1, Vec3::UnitZ()));
+      contour_stays_simple(tree.contours.loop(0), ribbon.mesh.vertices, ribbon.x1, Vec3::UnitZ()));
 }
 
 TEST(ContourTest, TouchingContourIsNotSimple) {
@@ -108,9 +114,8 @@ TEST(ContourTest, LongLoopsGiveTheSameAnswers) {
   // A rigidly moving strip of 300 x 3 cells: long straight sides along the x axis, whose
   // boxes all overlap in y.
   const MeshData strip = make_grid(300, 3, 3.0, 0.03);
-  const TriangleMesh mesh(static_cast<Index>(strip.vertices.rows()), strip.faces);
-  const MeshBvh bvh(mesh, strip.vertices);
-  const NodeContours contours(mesh, bvh);
+  const Contoured tree(strip);
+  const NodeContours& contours = tree.contours;
   ASSERT_TRUE(contours.has_single_loop(0));
   ASSERT_EQ(contours.loop(0).size(), 606u);
   Positions x1 = strip.vertices;
@@ -138,13 +143,10 @@ TEST(ContourTest, LongLoopsGiveTheSameAnswers) {
   }
   // The ribbon's ends overlap in projection whichever way the pitch goes.
   const Ribbon ribbon = make_ribbon(400, 0.02, 0.03);
-  const TriangleMesh ribbon_mesh(static_cast<Index>(ribbon.mesh.vertices.rows()),
-                                 ribbon.mesh.faces);
-  const MeshBvh ribbon_bvh(ribbon_mesh, ribbon.mesh.vertices);
-  const NodeContours ribbon_contours(ribbon_mesh, ribbon_bvh);
-  ASSERT_TRUE(ribbon_contours.has_single_loop(0));
-  ASSERT_GE(ribbon_contours.loop(0).size(), 512u);
-  EXPECT_FALSE(contour_stays_simple(ribbon_contours.loop(0), ribbon.mesh.vertices, ribbon.x1,
+  const Contoured ribbon_tree(ribbon.mesh);
+  ASSERT_TRUE(ribbon_tree.contours.has_single_loop(0));
+  ASSERT_GE(ribbon_tree.contours.loop(0).size(), 512u);
+  EXPECT_FALSE(contour_stays_simple(ribbon_tree.contours.loop(0), ribbon.mesh.vertices, ribbon.x1,
                                     Vec3::UnitZ()));
 }
 
