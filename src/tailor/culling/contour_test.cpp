@@ -154,13 +154,8 @@ bool contour_stays_simple(std::span<const Index> loop, const Positions& x0, cons
   // only at their shared vertex, as they never fold back onto each other (projected dot
   // stays positive) or they turn strictly one way throughout.
   const bool corners_simple = holds_for_all(m, [&](Index i) {
-    Box2 box{std::numeric_limits<double>::infinity(),
-             -std::numeric_limits<double>::infinity(),
-             std::numeric_limits<double>::infinity(),
-             -std::numeric_limits<double>::infinity(),
-             0,
-             0,
-             i};
+    constexpr double kInfinity = std::numeric_limits<double>::infinity();
+    Box2 box{kInfinity, -kInfinity, kInfinity, -kInfinity, 0, 0, i};
     double far = 0;
     for (Index vertex : {at(i), at(i + 1)}) {
       for (const Positions* x : {&x0, &x1}) {
