@@ -157,7 +157,35 @@ TEST(DetectorVsBruteForce, CrumplingHeightFieldIsCertifiedAtTheRoot) {
     if (method == "paper") {
       EXPECT_EQ(result.stats.candidate_triangle_pairs, 0);
       EXPECT_EQ(result.stats.nodes_culled_by_cones, 1);  // the root
+      // The certified root vouches for the isolated set's pairs too: none is generated.
+      EXPECT_GT(result.stats.isolated_vf_pairs + result.stats.isolated_ee_pairs, 0);
+      EXPECT_EQ(result.stats.vf_generated, 0);
+      EXPECT_EQ(result.stats.ee_generated, 0);
     }
+  }
+}
+
+TEST(DetectorVsBruteForce, IsolatedPairCollisionsAreFoundWhenTheRootIsNotCertified) {
+  // Two triangles hinged on edge (0, 1); vertex 3 of the second passes through the first.
+  // Its only face shares vertices with the first, so (3, first) is in the isolated set
+  // and no triangle pair covers it: only the isolated set can find this collision. The
+  // hinge folds through, so the normals leave every half-space and the root has no cone.
+  Positions x0(4, 3), x1(4, 3);
+  x0 << 0, 0, 0, 1, 0, 0, 0.5, 1, 0, 0.5, 0.8, 0.3;
+  x1 = x0;
+  x1(3, 2) = -0.3;
+  FaceArray faces(2, 3);
+  faces << 0, 1, 2, 1, 0, 3;
+  const TriangleMesh mesh(4, faces);
+  const CollisionSet truth = brute_force_self_collisions(mesh, x0, x1);
+  ASSERT_EQ(truth.vertex_face.size(), 1u);
+  EXPECT_EQ(truth.vertex_face[0].vertex, 3);
+  EXPECT_EQ(truth.vertex_face[0].face, 0);
+  for (const std::string& method : DetectionConfig::preset_names()) {
+    SelfCollisionDetector detector(mesh, x0, DetectionConfig::preset(method));
+    const DetectionResult result = detector.detect(x0, x1);
+    expect_same(truth, result.collisions, "hinge " + method);
+    EXPECT_EQ(result.stats.nodes_culled_by_cones, 0) << method;
   }
 }
 

@@ -20,20 +20,21 @@ class CandidateTraversal::Walk {
        tbb::enumerable_thread_specific<ThreadOutput>& outputs)
       : m_mesh(mesh), m_options(options), m_outputs(outputs) {}
 
-  void self(const MeshBvh& bvh, const NodeContours& contours, StepPositions step, Index node,
+  // Returns true when the node was certified by its cone and the contour test.
+  bool self(const MeshBvh& bvh, const NodeContours& contours, StepPositions step, Index node,
             ThreadOutput& out) {
-    if (bvh.is_leaf(node)) return;
+    if (bvh.is_leaf(node)) return false;
     if (m_options.normal_cones) {
       if (const std::optional<Vec3> axis = bvh.acute_axis(node)) {
         if (!m_options.contour_test) {
           ++out.counts.nodes_culled_by_cones;
-          return;
+          return false;
         }
         ++out.counts.contour_tests;
         if (contours.has_single_loop(node) &&
             contour_stays_simple(contours.loop(node), step.x0, step.x1, *axis)) {
           ++out.counts.nodes_culled_by_cones;
-          return;
+          return true;
         }
         ++out.counts.contour_tests_failed;
       }
@@ -48,6 +49,7 @@ class CandidateTraversal::Walk {
       self(bvh, contours, step, right, out);
       pair(bvh, left, bvh, right, out);
     }
+    return false;
   }
 
   void pair(const MeshBvh& a, Index node_a, const MeshBvh& b, Index node_b, ThreadOutput& out) {
@@ -98,10 +100,10 @@ void CandidateTraversal::clear() {
   }
 }
 
-void CandidateTraversal::self(const MeshBvh& bvh, const NodeContours& contours, StepPositions step,
+bool CandidateTraversal::self(const MeshBvh& bvh, const NodeContours& contours, StepPositions step,
                               const TraversalOptions& options) {
-  if (bvh.empty()) return;
-  Walk(*m_mesh, options, m_outputs).self(bvh, contours, step, 0, m_outputs.local());
+  if (bvh.empty()) return false;
+  return Walk(*m_mesh, options, m_outputs).self(bvh, contours, step, 0, m_outputs.local());
 }
 
 std::vector<std::span<const TrianglePair>> CandidateTraversal::blocks() const {

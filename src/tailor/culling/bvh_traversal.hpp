@@ -58,7 +58,15 @@ class CandidateTraversal {
   /// right), skipping nodes certified by normal cones and the contour test. `contours`
   /// must belong to `bvh` (used only when the contour test is on). Parallel; the set of
   /// pairs and the counts do not depend on the thread count, their order does.
-  void self(const MeshBvh& bvh, const NodeContours& contours, StepPositions step,
+  ///
+  /// Returns true when the root itself was certified by its cone and the contour test.
+  /// Then no two features of the whole mesh without a common vertex can touch during the
+  /// step, adjacent triangles' included: every normal stays strictly on one side of the
+  /// axis and the projected boundary stays simple, so at every t the projection along the
+  /// axis is one to one on the surface (Volino & Magnenat-Thalmann 1994). A vertex
+  /// touching a triangle, or two edges touching, would be two points of the surface with
+  /// one projection. The caller may then skip the isolated set too.
+  bool self(const MeshBvh& bvh, const NodeContours& contours, StepPositions step,
             const TraversalOptions& options);
 
   /// Removes every pair found since clear() for which `culled(pair)` holds (a later stage

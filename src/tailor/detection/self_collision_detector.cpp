@@ -47,6 +47,9 @@ struct SelfCollisionDetector::Impl {
   IsolatedSet isolated;
   // Per-thread buffers reused from step to step.
   CandidateTraversal traversal;
+  // This step's root was certified by its cone and contour: no two features of the mesh
+  // can touch (CandidateTraversal::self), so the isolated set is not tested either.
+  bool root_certified = false;
   PrimitivePairGenerator generator;
   ExactPairTester tester;
 
@@ -71,7 +74,7 @@ struct SelfCollisionDetector::Impl {
     traversal.clear();
     const TraversalOptions options{config.normal_cones, config.contour_test,
                                    config.adjacency_culling};
-    traversal.self(bvh, contours, {x0, x1}, options);
+    root_certified = traversal.self(bvh, contours, {x0, x1}, options);
   }
 
   // Radial view only removes candidates: with none, it has nothing to do. Lazily: rule (5)
@@ -120,7 +123,7 @@ struct SelfCollisionDetector::Impl {
     generator.begin_step();
     tester.begin_step();
     auto start = SteadyClock::now();
-    generator.add_isolated(isolated, x0, x1, options);
+    if (!root_certified) generator.add_isolated(isolated, x0, x1, options);
     stats.pair_generation_ms += milliseconds_since(start);
     test_round(x0, x1, stats);
     traversal.consume([&](std::span<const TrianglePair> block) {
