@@ -28,10 +28,11 @@ namespace tailor {
 /// Refit in two kinds of work. A *group* is a maximal subtree of fewer than kGroupFaces
 /// faces: its faces' corners are read once into a MovingTriangleBatch (shared by
 /// consecutive groups while their faces fit), from which its leaf boxes and its direction
-/// mask are computed in vectorisable loops, then its inner boxes bottom-up. A *merge node* (kGroupFaces faces or more) joins its children's boxes
-/// and masks (bitwise and: exact, direction_mask.hpp). Masks are kept for groups and merge
-/// nodes only (one per about 8 faces); nodes inside a group are never certified (their few
-/// pairs are left to adjacency culling and the low level).
+/// mask are computed in vectorisable loops, then its inner boxes bottom-up. A *merge node*
+/// (kGroupFaces faces or more) joins its children's boxes and masks (bitwise and: exact,
+/// direction_mask.hpp). Masks are kept for groups and merge nodes only (one per about 8 faces);
+/// nodes inside a group are never certified (their few pairs are left to adjacency culling and the
+/// low level).
 class MeshBvh {
  public:
   MeshBvh() = default;
