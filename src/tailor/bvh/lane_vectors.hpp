@@ -21,50 +21,21 @@
 
 namespace tailor::lanes {
 
-/// Lanes and comparison masks of width W (explicit specialisations: GCC drops a
-/// vector_size that depends on a template parameter).
+/// N lanes of T (double or float) and the comparison masks of such lanes. (typedef, not
+/// `using`: GCC drops a vector_size attribute that depends on a template parameter from an
+/// alias declaration, but keeps it on a typedef.)
+template <class T, int N>
+struct LaneVectors {
+  using Integer = std::conditional_t<sizeof(T) == 8, std::int64_t, std::int32_t>;
+  typedef T Lanes __attribute__((vector_size(N * sizeof(T))));
+  typedef Integer Bits __attribute__((vector_size(N * sizeof(T))));
+};
+/// W doubles (W = 2, 4, 8).
 template <int W>
-struct Vectors;
-template <>
-struct Vectors<2> {
-  using Lanes = double __attribute__((vector_size(16)));
-  using Bits = std::int64_t __attribute__((vector_size(16)));
-};
-template <>
-struct Vectors<4> {
-  using Lanes = double __attribute__((vector_size(32)));
-  using Bits = std::int64_t __attribute__((vector_size(32)));
-};
-template <>
-struct Vectors<8> {
-  using Lanes = double __attribute__((vector_size(64)));
-  using Bits = std::int64_t __attribute__((vector_size(64)));
-};
-
-/// Lanes of F floats and comparison masks (F = 2 only as the result of converting two
-/// doubles).
+using Vectors = LaneVectors<double, W>;
+/// F floats (F = 4, 8, 16; F = 2 only as the result of converting two doubles).
 template <int F>
-struct FloatVectors;
-template <>
-struct FloatVectors<2> {
-  using Lanes = float __attribute__((vector_size(8)));
-  using Bits = std::int32_t __attribute__((vector_size(8)));
-};
-template <>
-struct FloatVectors<4> {
-  using Lanes = float __attribute__((vector_size(16)));
-  using Bits = std::int32_t __attribute__((vector_size(16)));
-};
-template <>
-struct FloatVectors<8> {
-  using Lanes = float __attribute__((vector_size(32)));
-  using Bits = std::int32_t __attribute__((vector_size(32)));
-};
-template <>
-struct FloatVectors<16> {
-  using Lanes = float __attribute__((vector_size(64)));
-  using Bits = std::int32_t __attribute__((vector_size(64)));
-};
+using FloatVectors = LaneVectors<float, F>;
 
 template <int W>
 [[gnu::always_inline]] inline typename Vectors<W>::Lanes load(const double* p) {
