@@ -100,6 +100,7 @@ bool certainly_disjoint(const Positions& x0, const Positions& x1, Index p, Index
 struct Box2 {
   double min_x, max_x, min_y, max_y;
   double min_sum, max_sum;  // of x + y
+  double reach;             // squared distance of its farthest corner from the origin
   Index edge;
 };
 
@@ -148,27 +149,24 @@ bool contour_stays_simple(std::span<const Index> loop, const Positions& x0, cons
   const Vec3 e2 = axis.normalized().cross(e1);
   const Vec3 origin = x0.row(loop[0]);
   std::vector<Box2> boxes(static_cast<std::size_t>(m));
-  std::vector<double> reach(static_cast<std::size_t>(m));  // squared, farthest corner from origin
 
   // One pass over the edges builds the boxes and tests the corners: consecutive edges meet
   // only at their shared vertex, as they never fold back onto each other (projected dot
   // stays positive) or they turn strictly one way throughout.
   const bool corners_simple = holds_for_all(m, [&](Index i) {
     constexpr double kInfinity = std::numeric_limits<double>::infinity();
-    Box2 box{kInfinity, -kInfinity, kInfinity, -kInfinity, 0, 0, i};
-    double far = 0;
+    Box2 box{kInfinity, -kInfinity, kInfinity, -kInfinity, 0, 0, 0, i};
     for (Index vertex : {at(i), at(i + 1)}) {
       for (const Positions* x : {&x0, &x1}) {
         const Vec3 d = Vec3(x->row(vertex)) - origin;
         const double px = d.dot(e1), py = d.dot(e2);
         box.min_x = std::min(box.min_x, px), box.max_x = std::max(box.max_x, px);
         box.min_y = std::min(box.min_y, py), box.max_y = std::max(box.max_y, py);
-        far = std::max(far, d.squaredNorm());
+        box.reach = std::max(box.reach, d.squaredNorm());
       }
     }
     box.min_sum = box.min_x + box.min_y, box.max_sum = box.max_x + box.max_y;
     boxes[static_cast<std::size_t>(i)] = box;
-    reach[static_cast<std::size_t>(i)] = far;
     return corner_stays_simple(difference(x0, x1, at(i - 1), at(i)),
                                difference(x0, x1, at(i), at(i + 1)), axis);
   });
@@ -178,7 +176,9 @@ bool contour_stays_simple(std::span<const Index> loop, const Positions& x0, cons
   // Sweep along x + y, not x: a mesh's straight boundaries usually run along a coordinate
   // axis, and all the boxes of such a side would overlap in x. Boxes that overlap within
   // `pad` in x and in y overlap within 2·pad in x + y (3·pad covers the sums' rounding).
-  const double pad = 1e-9 * std::sqrt(*std::max_element(reach.begin(), reach.end()));
+  double reach = 0;
+  for (const Box2& box : boxes) reach = std::max(reach, box.reach);
+  const double pad = 1e-9 * std::sqrt(reach);
   // Ties may sort either way: both orders check the same pairs.
   tbb::parallel_sort(boxes.begin(), boxes.end(),
                      [](const Box2& a, const Box2& b) { return a.min_sum < b.min_sum; });
