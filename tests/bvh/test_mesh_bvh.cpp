@@ -226,6 +226,43 @@ TEST(MeshBvh, RefitBoxesHoldTheSweptTrianglesAndMasksHoldEveryNormal) {
   }
 }
 
+TEST(MeshBvh, DirectionsAloneGiveTheSameMasksAndLeaveTheBoxes) {
+  // refit_directions() computes the masks of refit(..., true) bit for bit, writes no box
+  // (they keep the last refit's step) and says so; a refit() after it makes them current.
+  for (const BvhCase& c : bvh_cases()) {
+    const TriangleMesh mesh(static_cast<Index>(c.mesh.vertices.rows()), c.mesh.faces);
+    MeshBvh full(mesh, c.mesh.vertices), directions(mesh, c.mesh.vertices);
+    EXPECT_TRUE(directions.boxes_current()) << c.name;  // the build refits
+    full.refit(c.mesh.vertices, c.x1, true);
+    // Another step first, so that stale boxes differ from this step's.
+    const Positions shifted = c.x1.array() + 1.0;
+    directions.refit(shifted, shifted, false);
+    std::vector<FloatBox> before;
+    for (Index node = 0; node < directions.num_nodes(); ++node) {
+      before.push_back(directions.box(node));
+    }
+    directions.refit_directions(c.mesh.vertices, c.x1);
+    EXPECT_FALSE(directions.boxes_current()) << c.name;
+    for (Index node = 0; node < full.num_nodes(); ++node) {
+      ASSERT_EQ(directions.direction_mask(node), full.direction_mask(node))
+          << c.name << " node " << node;
+      ASSERT_EQ(directions.box(node).min, before[static_cast<std::size_t>(node)].min)
+          << c.name << " node " << node;
+      ASSERT_EQ(directions.box(node).max, before[static_cast<std::size_t>(node)].max)
+          << c.name << " node " << node;
+    }
+    // Boxes alone then complete the step, and keep the masks.
+    directions.refit(c.mesh.vertices, c.x1, false);
+    EXPECT_TRUE(directions.boxes_current()) << c.name;
+    for (Index node = 0; node < full.num_nodes(); ++node) {
+      ASSERT_EQ(directions.box(node).min, full.box(node).min) << c.name << " node " << node;
+      ASSERT_EQ(directions.box(node).max, full.box(node).max) << c.name << " node " << node;
+      ASSERT_EQ(directions.direction_mask(node), full.direction_mask(node))
+          << c.name << " node " << node;
+    }
+  }
+}
+
 TEST(MeshBvh, RefitBoxesAreTheTightestFloatBoxes) {
   // A leaf's box is its face's swept box rounded outward by float_at_most/at_least, and an
   // inner node's is the union of its children's, exactly: this catches a refit that pairs

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -65,6 +66,38 @@ TEST(CandidateTraversal, ConsumeHandsOverEveryPairOnceAndFreesTheBlocks) {
         again.insert(again.end(), block.begin(), block.end());
       EXPECT_EQ(sorted(again), sorted(shown)) << threads << " threads";
     });
+  }
+}
+
+TEST(CandidateTraversal, CertifyRootAgreesWithSelfAndNeedsNoBoxes) {
+  // certify_root() gives self()'s answer about the root, counts its contour test as self()
+  // does and adds no pair; it runs on masks alone, while self() refuses stale boxes.
+  const ProceduralStep crumpling = make_crumpling_cloth_step(5000);
+  const ProceduralStep folded = make_folded_cloth_on_sphere(1200);
+  for (const ProceduralStep* step : {&crumpling, &folded}) {
+    const bool certifiable = step == &crumpling;
+    const TriangleMesh mesh(static_cast<Index>(step->x0.rows()), step->faces);
+    MeshBvh bvh(mesh, step->x0);
+    const NodeContours contours(mesh, bvh);
+    bvh.refit_directions(step->x0, step->x1);
+    CandidateTraversal traversal(mesh);
+    EXPECT_EQ(traversal.certify_root(bvh, contours, {step->x0, step->x1}, {}), certifiable);
+    EXPECT_EQ(traversal.size(), 0);
+    const TraversalCounts root_counts = traversal.counts();
+    EXPECT_EQ(root_counts.contour_tests, certifiable ? 1 : 0);
+    EXPECT_EQ(root_counts.nodes_culled_by_cones, certifiable ? 1 : 0);
+    traversal.clear();
+    EXPECT_THROW(traversal.self(bvh, contours, {step->x0, step->x1}, {}), std::logic_error);
+
+    bvh.refit(step->x0, step->x1, false);
+    traversal.clear();
+    EXPECT_EQ(traversal.self(bvh, contours, {step->x0, step->x1}, {}), certifiable);
+    if (certifiable) {
+      EXPECT_EQ(traversal.size(), 0);
+      EXPECT_EQ(traversal.counts().contour_tests, 1);
+    } else {
+      EXPECT_GT(traversal.size(), 0);
+    }
   }
 }
 

@@ -165,6 +165,56 @@ TEST(DetectorVsBruteForce, CrumplingHeightFieldIsCertifiedAtTheRoot) {
   }
 }
 
+// The crumpling cloth, mirrored across the vertical plane x = `fold` where x > fold, and
+// raised by `lift`: its right half folded over its left half.
+Positions folded_over(const Positions& x, double fold, double lift) {
+  Positions y = x;
+  for (Index v = 0; v < x.rows(); ++v) {
+    if (x(v, 0) > fold) y(v, 0) = 2 * fold - x(v, 0), y(v, 2) += lift;
+  }
+  return y;
+}
+
+// After a certified step the detector refits the masks alone and skips the boxes while the
+// root stays certified. A step whose root then fails must still find every collision:
+// here the cloth moves far away and folds through itself, so boxes left from an earlier
+// step would miss every pair of the fold. Every step equals brute force, for every preset.
+TEST(DetectorVsBruteForce, BoxesSkippedWhileTheRootStaysCertifiedAreRefittedWhenItFails) {
+  const ProceduralStep step = make_crumpling_cloth_step(sanitized() ? 800 : 2000);
+  const TriangleMesh mesh(static_cast<Index>(step.x0.rows()), step.faces);
+  const double fold = 0.5 * (step.x0.col(0).minCoeff() + step.x0.col(0).maxCoeff());
+  const double depth = std::max(step.x0.col(2).maxCoeff(), step.x1.col(2).maxCoeff()) -
+                       std::min(step.x0.col(2).minCoeff(), step.x1.col(2).minCoeff());
+  Positions far0 = step.x1, far1 = step.x1;
+  far0.col(0).array() += 10.0, far1.col(0).array() += 10.0;
+  // The right half passes from above the left half to below it.
+  const Positions through0 = folded_over(far0, fold + 10.0, 2 * depth + 0.01);
+  const Positions through1 = folded_over(far1, fold + 10.0, -(2 * depth + 0.01));
+  struct Step {
+    const Positions &x0, &x1;
+    std::int64_t boxes_refitted;  // by the paper preset
+  };
+  const std::vector<Step> steps = {{step.x0, step.x1, 1},    // no certified step before
+                                   {step.x0, step.x1, 0},    // certified again: masks only
+                                   {through0, through1, 1},  // the root fails
+                                   {step.x0, step.x1, 1},
+                                   {step.x0, step.x1, 0}};
+  std::vector<CollisionSet> truths;
+  for (const Step& s : steps) truths.push_back(brute_force_self_collisions(mesh, s.x0, s.x1));
+  EXPECT_EQ(truths[0].size(), 0u);
+  ASSERT_GT(truths[2].size(), 10u) << "the fold must collide";
+  for (const std::string& method : DetectionConfig::preset_names()) {
+    SelfCollisionDetector detector(mesh, step.x0, DetectionConfig::preset(method));
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+      const DetectionResult result = detector.detect(steps[k].x0, steps[k].x1);
+      expect_same(truths[k], result.collisions, method + " step " + std::to_string(k));
+      if (method == "paper") {
+        EXPECT_EQ(result.stats.boxes_refitted, steps[k].boxes_refitted) << "step " << k;
+      }
+    }
+  }
+}
+
 TEST(DetectorVsBruteForce, IsolatedPairCollisionsAreFoundWhenTheRootIsNotCertified) {
   // Two triangles hinged on edge (0, 1); vertex 3 of the second passes through the first.
   // Its only face shares vertices with the first, so (3, first) is in the isolated set

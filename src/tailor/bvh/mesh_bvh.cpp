@@ -138,6 +138,16 @@ MeshBvh::MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector
 }
 
 void MeshBvh::refit(const Positions& x0, const Positions& x1, bool with_directions) {
+  refit_parts(x0, x1, {true, with_directions});
+  m_boxes_current = true;
+}
+
+void MeshBvh::refit_directions(const Positions& x0, const Positions& x1) {
+  refit_parts(x0, x1, {false, true});
+  m_boxes_current = false;
+}
+
+void MeshBvh::refit_parts(const Positions& x0, const Positions& x1, RefitParts parts) {
   if (m_nodes.empty()) return;
   tbb::parallel_for(std::size_t{0}, m_tasks.size(), [&](std::size_t t) {
     const Task& task = m_tasks[t];
@@ -150,14 +160,14 @@ void MeshBvh::refit(const Positions& x0, const Positions& x1, bool with_directio
       while (end < task.groups_end && faces + group_faces(end) <= MovingTriangleBatch::kCapacity) {
         faces += group_faces(end++);
       }
-      refit_groups(first, end, faces, x0, x1, with_directions);
+      refit_groups(first, end, faces, x0, x1, parts);
       first = end;
     }
     for (Index k = task.merges_end - 1; k >= task.merges_begin; --k) {
-      merge(m_merges[k], with_directions);
+      merge(m_merges[k], parts);
     }
   });
-  for (Index k : m_top_merges) merge(m_merges[k], with_directions);
+  for (Index k : m_top_merges) merge(m_merges[k], parts);
 }
 
 Index MeshBvh::group_faces(Index g) const {
@@ -168,7 +178,7 @@ Index MeshBvh::group_faces(Index g) const {
 }
 
 void MeshBvh::refit_groups(Index first, Index end, Index faces, const Positions& x0,
-                           const Positions& x1, bool with_directions) {
+                           const Positions& x1, RefitParts parts) {
   const double* p0 = x0.data();
   const double* p1 = x1.data();
   const Index leaves = static_cast<Index>(m_leaf_vertices.size());
@@ -180,8 +190,8 @@ void MeshBvh::refit_groups(Index first, Index end, Index faces, const Positions&
   // The node records of the groups kPrefetchGroups ahead, which will be written: 64 bytes
   // per face, not in cache. (Their face counts from m_groups: reading a root record would
   // wait for memory.)
-  for (Index ahead = first + kPrefetchGroups; ahead < std::min(end + kPrefetchGroups, groups);
-       ++ahead) {
+  const Index prefetch_groups_end = parts.boxes ? std::min(end + kPrefetchGroups, groups) : 0;
+  for (Index ahead = first + kPrefetchGroups; ahead < prefetch_groups_end; ++ahead) {
     const Node* record = &m_nodes[m_groups[ahead].root];
     const char* stop = reinterpret_cast<const char*>(record + 2 * group_faces(ahead) - 1);
     for (const char* line = reinterpret_cast<const char*>(record); line < stop; line += 64) {
@@ -203,9 +213,9 @@ void MeshBvh::refit_groups(Index first, Index end, Index faces, const Positions&
                batch);
   // Leaf boxes: per coordinate and lane, the six corners' extremes, rounded outward.
   BatchBounds bounds;
-  batch_bounds(batch, bounds);
+  if (parts.boxes) batch_bounds(batch, bounds);
   LaneMasks masks;
-  if (with_directions) lane_masks(batch, masks);
+  if (parts.directions) lane_masks(batch, masks);
   // Each group's nodes are the id range [root, root + 2·count - 1) (pre-order): its leaves
   // in increasing id order are consecutive lanes of the batch.
   static_assert(sizeof(Node) >= 32, "write_group_boxes() writes 32 bytes of each record");
@@ -213,8 +223,11 @@ void MeshBvh::refit_groups(Index first, Index end, Index faces, const Positions&
   for (Index g = first; g < end; ++g) {
     const Group& group = m_groups[g];
     const int count = static_cast<int>(group_faces(g));
-    write_group_boxes(bounds, lane, group.leaf_bits, count, &m_nodes[group.root].box, sizeof(Node));
-    if (with_directions) m_masks[group.mask_slot] = and_of_masks(masks, lane, lane + count);
+    if (parts.boxes) {
+      write_group_boxes(bounds, lane, group.leaf_bits, count, &m_nodes[group.root].box,
+                        sizeof(Node));
+    }
+    if (parts.directions) m_masks[group.mask_slot] = and_of_masks(masks, lane, lane + count);
     lane += count;
   }
 }
@@ -232,9 +245,11 @@ void MeshBvh::join_children(Index node) {
   }
 }
 
-void MeshBvh::merge(const Merge& merge, bool with_directions) {
-  join_children(merge.node);
-  if (with_directions) m_masks[merge.slot] = m_masks[merge.left_slot] & m_masks[merge.right_slot];
+void MeshBvh::merge(const Merge& merge, RefitParts parts) {
+  if (parts.boxes) join_children(merge.node);
+  if (parts.directions) {
+    m_masks[merge.slot] = m_masks[merge.left_slot] & m_masks[merge.right_slot];
+  }
 }
 
 }  // namespace tailor

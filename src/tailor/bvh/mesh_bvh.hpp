@@ -42,6 +42,12 @@ class MeshBvh {
   /// Refits boxes (and direction masks when `with_directions`) to the step from `x0` to
   /// `x1` in one bottom-up pass (parallel over disjoint subtrees).
   void refit(const Positions& x0, const Positions& x1, bool with_directions);
+  /// Refits the direction masks only (the same pass without the boxes' bounds and
+  /// writes). The boxes keep the step of the last refit(): boxes_current() is false
+  /// until the next one. For a step whose root its mask certifies, no box is needed.
+  void refit_directions(const Positions& x0, const Positions& x1);
+  /// Whether the boxes belong to the last refit (false after refit_directions()).
+  bool boxes_current() const { return m_boxes_current; }
 
   bool empty() const { return m_nodes.empty(); }
   Index num_nodes() const { return static_cast<Index>(m_nodes.size()); }
@@ -113,10 +119,15 @@ class MeshBvh {
   };
   // The faces of group g (from the first leaves of g and g + 1: no node record is read).
   Index group_faces(Index g) const;
+  // What one refit pass computes.
+  struct RefitParts {
+    bool boxes, directions;
+  };
+  void refit_parts(const Positions& x0, const Positions& x1, RefitParts parts);
   // Refits groups [first, end), of `faces` faces in all (at most a batch), from one batch.
   void refit_groups(Index first, Index end, Index faces, const Positions& x0, const Positions& x1,
-                    bool with_directions);
-  void merge(const Merge& merge, bool with_directions);
+                    RefitParts parts);
+  void merge(const Merge& merge, RefitParts parts);
   // Sets an inner node's box to the union of its children's.
   void join_children(Index node);
 
@@ -130,6 +141,7 @@ class MeshBvh {
   std::vector<Merge> m_merges;                        // increasing node id
   std::vector<Task> m_tasks;                          // disjoint subtrees
   std::vector<Index> m_top_merges;  // positions in m_merges of those above the tasks, decreasing
+  bool m_boxes_current = false;
 };
 
 }  // namespace tailor

@@ -2,6 +2,8 @@
 
 #include <tbb/parallel_invoke.h>
 
+#include <stdexcept>
+
 #include "tailor/culling/contour_test.hpp"
 
 namespace tailor {
@@ -20,25 +22,36 @@ class CandidateTraversal::Walk {
        tbb::enumerable_thread_specific<ThreadOutput>& outputs)
       : m_mesh(mesh), m_options(options), m_outputs(outputs) {}
 
+  // Whether an inner node's cone and contour certify it (then nothing below it can
+  // collide); `culled` is set when its cone alone skips it (the contour test is off).
+  bool certifies(const MeshBvh& bvh, const NodeContours& contours, StepPositions step, Index node,
+                 ThreadOutput& out, bool& culled) {
+    culled = false;
+    if (!m_options.normal_cones) return false;
+    const std::optional<Vec3> axis = bvh.acute_axis(node);
+    if (!axis) return false;
+    if (!m_options.contour_test) {
+      ++out.counts.nodes_culled_by_cones;
+      culled = true;
+      return false;
+    }
+    ++out.counts.contour_tests;
+    if (contours.has_single_loop(node) &&
+        contour_stays_simple(contours.loop(node), step.x0, step.x1, *axis)) {
+      ++out.counts.nodes_culled_by_cones;
+      return true;
+    }
+    ++out.counts.contour_tests_failed;
+    return false;
+  }
+
   // Returns true when the node was certified by its cone and the contour test.
   bool self(const MeshBvh& bvh, const NodeContours& contours, StepPositions step, Index node,
             ThreadOutput& out) {
     if (bvh.is_leaf(node)) return false;
-    if (m_options.normal_cones) {
-      if (const std::optional<Vec3> axis = bvh.acute_axis(node)) {
-        if (!m_options.contour_test) {
-          ++out.counts.nodes_culled_by_cones;
-          return false;
-        }
-        ++out.counts.contour_tests;
-        if (contours.has_single_loop(node) &&
-            contour_stays_simple(contours.loop(node), step.x0, step.x1, *axis)) {
-          ++out.counts.nodes_culled_by_cones;
-          return true;
-        }
-        ++out.counts.contour_tests_failed;
-      }
-    }
+    bool culled = false;
+    if (certifies(bvh, contours, step, node, out, culled)) return true;
+    if (culled) return false;
     const Index left = bvh.left(node), right = bvh.right(node);
     if (bvh.size(node) > kTaskGrain) {
       tbb::parallel_invoke([&] { self(bvh, contours, step, left, m_outputs.local()); },
@@ -103,7 +116,18 @@ void CandidateTraversal::clear() {
 bool CandidateTraversal::self(const MeshBvh& bvh, const NodeContours& contours, StepPositions step,
                               const TraversalOptions& options) {
   if (bvh.empty()) return false;
+  if (!bvh.boxes_current()) {
+    throw std::logic_error("CandidateTraversal::self: the BVH's boxes are not refitted");
+  }
   return Walk(*m_mesh, options, m_outputs).self(bvh, contours, step, 0, m_outputs.local());
+}
+
+bool CandidateTraversal::certify_root(const MeshBvh& bvh, const NodeContours& contours,
+                                      StepPositions step, const TraversalOptions& options) {
+  if (bvh.empty() || bvh.is_leaf(0)) return false;
+  bool culled = false;
+  return Walk(*m_mesh, options, m_outputs)
+      .certifies(bvh, contours, step, 0, m_outputs.local(), culled);
 }
 
 std::vector<std::span<const TrianglePair>> CandidateTraversal::blocks() const {

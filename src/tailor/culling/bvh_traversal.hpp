@@ -66,8 +66,17 @@ class CandidateTraversal {
   /// axis is one to one on the surface (Volino & Magnenat-Thalmann 1994). A vertex
   /// touching a triangle, or two edges touching, would be two points of the surface with
   /// one projection. The caller may then skip the isolated set too.
+  ///
+  /// Reads the BVH's boxes: they must be current (MeshBvh::boxes_current(); throws
+  /// std::logic_error otherwise).
   bool self(const MeshBvh& bvh, const NodeContours& contours, StepPositions step,
             const TraversalOptions& options);
+
+  /// Only the first test of self(): whether the root is certified by its cone and the
+  /// contour test (counted as self() counts it; no pair is added). Reads the root's mask
+  /// and the positions, no box: valid after MeshBvh::refit_directions().
+  bool certify_root(const MeshBvh& bvh, const NodeContours& contours, StepPositions step,
+                    const TraversalOptions& options);
 
   /// Removes every pair found since clear() for which `culled(pair)` holds (a later stage
   /// of high-level culling, e.g. radial view); returns how many. Call it after the

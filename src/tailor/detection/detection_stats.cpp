@@ -7,6 +7,7 @@ namespace tailor {
 // One list of fields keeps operator+= and to_json in step with the struct.
 // clang-format off
 #define TAILOR_DETECTION_STATS_FIELDS(X)                                                    \
+  X(boxes_refitted)                                                                         \
   X(node_pairs_visited) X(nodes_culled_by_cones) X(contour_tests) X(contour_tests_failed)   \
   X(radial_pairs_culled) X(clusters_classified)                                            \
   X(clusters_certified) X(radial_positive) X(radial_negative) X(radial_undetermined)        \

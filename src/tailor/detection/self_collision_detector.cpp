@@ -70,11 +70,37 @@ struct SelfCollisionDetector::Impl {
     });
   }
 
-  void traverse(const Positions& x0, const Positions& x1) {
+  TraversalOptions traversal_options() const {
+    return {config.normal_cones, config.contour_test, config.adjacency_culling};
+  }
+
+  // The refit and the traversal. After a step whose root was certified the masks come
+  // first (temporal coherence: a cloth that stays free of folds keeps its root certified),
+  // and when they and the contour certify the root again no box is read this step, so
+  // none is refitted. Otherwise, or when the root fails, the boxes are refitted before the
+  // traversal reads them (MeshBvh::boxes_current()): the guess changes the work, never the
+  // pairs.
+  void refit_and_traverse(const Positions& x0, const Positions& x1, DetectionStats& stats) {
+    auto stage = SteadyClock::now();
+    if (root_certified && config.normal_cones && config.contour_test) {
+      bvh.refit_directions(x0, x1);
+      stats.refit_ms = milliseconds_since(stage);
+      stage = SteadyClock::now();
+      traversal.clear();
+      const bool certified = traversal.certify_root(bvh, contours, {x0, x1}, traversal_options());
+      stats.traversal_ms = milliseconds_since(stage);
+      if (certified) return;
+      stage = SteadyClock::now();
+      bvh.refit(x0, x1, false);  // the boxes (the masks are this step's)
+    } else {
+      bvh.refit(x0, x1, config.normal_cones);
+    }
+    stats.boxes_refitted = 1;
+    stats.refit_ms += milliseconds_since(stage);
+    stage = SteadyClock::now();
     traversal.clear();
-    const TraversalOptions options{config.normal_cones, config.contour_test,
-                                   config.adjacency_culling};
-    root_certified = traversal.self(bvh, contours, {x0, x1}, options);
+    root_certified = traversal.self(bvh, contours, {x0, x1}, traversal_options());
+    stats.traversal_ms += milliseconds_since(stage);
   }
 
   // Radial view only removes candidates: with none, it has nothing to do. Lazily: rule (5)
@@ -159,14 +185,8 @@ struct SelfCollisionDetector::Impl {
       const auto start = SteadyClock::now();
       check_positions(mesh, x0, "x0");
       check_positions(mesh, x1, "x1");
-      const auto refit_start = SteadyClock::now();
-      bvh.refit(x0, x1, config.normal_cones);
-      stats.refit_ms = milliseconds_since(refit_start);
-
+      refit_and_traverse(x0, x1, stats);
       auto stage = SteadyClock::now();
-      traverse(x0, x1);
-      stats.traversal_ms = milliseconds_since(stage);
-      stage = SteadyClock::now();
       radial_view_cull(x0, x1, stats);
       stats.radial_view_ms = milliseconds_since(stage);
       record_high_level(stats);

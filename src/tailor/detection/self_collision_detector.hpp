@@ -40,7 +40,13 @@ class SelfCollisionDetector {
   SelfCollisionDetector& operator=(SelfCollisionDetector&&) noexcept;
 
   /// All VF and EE pairs that touch at some t in [0, 1] while vertices move from `x0`
-  /// to `x1`. Throws InputError if the row counts differ from the mesh's.
+  /// to `x1`. Throws InputError if the row counts differ from the mesh's or a coordinate
+  /// is not finite.
+  ///
+  /// Steps may follow one another or not: the result never depends on earlier steps. Only
+  /// the work does: after a step whose root the cone and contour test certified, the
+  /// masks are refitted first, and the boxes only if the root fails this time
+  /// (DetectionStats::boxes_refitted).
   DetectionResult detect(const Positions& x0, const Positions& x1);
 
   const DetectionConfig& config() const;
