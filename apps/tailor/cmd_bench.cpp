@@ -2,10 +2,13 @@
 /// `tailor bench paper` and `tailor bench scale`: regenerate every figure we claim.
 
 #include <fmt/format.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 
 #include "command.hpp"
 #include "bench/paper_benchmark.hpp"
@@ -13,6 +16,7 @@
 #include "bench/svg_plot.hpp"
 #include "tailor/geometry/error.hpp"
 #include "tailor/io/file_bytes.hpp"
+#include "tailor/io/memory_budget.hpp"
 #include "tailor/scene/gesture.hpp"
 #include "tailor/scene/scene.hpp"
 
@@ -30,6 +34,10 @@ struct BenchArgs {
   double min_seconds = 0.5;
   std::vector<std::string> scenes = scale_scene_names();
   std::vector<int> threads = {1, 2};
+  // `bench memory` (run by `bench scale` in a child process).
+  std::string memory_scene = "cloth";
+  Index memory_triangles = 10'000;
+  int memory_threads = 1;
 };
 
 bool on_terminal() {
@@ -62,6 +70,47 @@ int run_paper(const BenchArgs& args) {
   return kSuccess;
 }
 
+// Runs this executable with `arguments` and returns what it printed; throws when it fails.
+std::string run_self(const std::vector<std::string>& arguments) {
+  std::error_code error;
+  const std::string exe = std::filesystem::read_symlink("/proc/self/exe", error).string();
+  if (error) throw std::runtime_error("cannot find this executable: " + error.message());
+  std::vector<char*> argv{const_cast<char*>(exe.c_str())};
+  for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
+  argv.push_back(nullptr);
+  int pipe_ends[2];
+  if (pipe(pipe_ends) != 0) throw std::runtime_error("cannot open a pipe to a child process");
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, pipe_ends[1], STDOUT_FILENO);
+  posix_spawn_file_actions_addclose(&actions, pipe_ends[0]);
+  pid_t child = 0;
+  const int spawned = posix_spawn(&child, exe.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  close(pipe_ends[1]);
+  std::string output;
+  char buffer[256];
+  for (ssize_t n; spawned == 0 && (n = read(pipe_ends[0], buffer, sizeof buffer)) > 0;) {
+    output.append(buffer, static_cast<std::size_t>(n));
+  }
+  close(pipe_ends[0]);
+  int status = 0;
+  if (spawned != 0 || waitpid(child, &status, 0) != child || !WIFEXITED(status) ||
+      WEXITSTATUS(status) != 0) {
+    std::string command = exe;
+    for (const std::string& argument : arguments) command += " " + argument;
+    throw std::runtime_error(fmt::format("`{}` failed: {}", command, output));
+  }
+  return output;
+}
+
+// `bench memory`: one scene's bytes per triangle, alone in this process.
+int run_memory(const BenchArgs& args) {
+  fmt::print("{:.3f}\n", scale_bytes_per_triangle(args.memory_scene, args.memory_triangles,
+                                                  args.memory_threads));
+  return kSuccess;
+}
+
 int run_scale(const BenchArgs& args) {
   if (args.min_triangles > args.max_triangles) {
     throw InputError(fmt::format("--min-triangles {} is above --max-triangles {}",
@@ -75,6 +124,14 @@ int run_scale(const BenchArgs& args) {
   options.threads = args.threads;
   options.repetitions = args.repetitions;
   options.min_seconds = args.min_seconds;
+  // Memory in a fresh process per row: in this one, each scene's figure would carry the
+  // allocator's state from the scenes before it.
+  options.memory_probe = [](const std::string& scene, Index triangles, int threads) {
+    return std::stod(run_self({"--max-memory",
+                               fmt::format("{}", static_cast<double>(memory_budget()) / (1 << 30)),
+                               "bench", "memory", "--scene", scene, "--triangles",
+                               std::to_string(triangles), "--threads", std::to_string(threads)}));
+  };
   const bool terminal = on_terminal();
   options.progress = [&](const std::string& what) {
     if (terminal) fmt::print(stderr, "\r{:<60}", what);
@@ -88,9 +145,10 @@ int run_scale(const BenchArgs& args) {
   fmt::print("{}", scale_markdown(rows));
   fmt::print(
       "Milliseconds per step (median of at least {} steps and {} s per row), preset paper; floor "
-      "= every face's swept box from x0 and x1; B/triangle = peak memory of topology + detector "
-      "+ step buffers; speed-up = the first thread count's step over this one's, median of paired "
-      "rounds (one step of each thread count in turn).\n",
+      "= every face's swept box from x0 and x1; refit* = the direction masks alone (the root "
+      "stayed certified: no box was needed); B/triangle = peak memory of topology + detector + "
+      "step buffers, each row in a fresh process; speed-up = the first thread count's step over "
+      "this one's, median of paired rounds (one step of each thread count in turn).\n",
       args.repetitions, args.min_seconds);
   fmt::print("written to {}/\n", args.out);
   return kSuccess;
@@ -138,7 +196,16 @@ const CommandRegistration bench_registration{
                        "More timed steps while a configuration's took less than this")
           ->check(CLI::Range(0.0, 600.0))
           ->capture_default_str();
-      return [args, paper] { return paper->parsed() ? run_paper(*args) : run_scale(*args); };
+      // Hidden (no group): the memory of one row, which `bench scale` runs in a child.
+      CLI::App* memory = bench->add_subcommand("memory", "One row's memory (bench scale)");
+      memory->group("");
+      memory->add_option("--scene", args->memory_scene)->check(CLI::IsMember(scale_scene_names()));
+      memory->add_option("--triangles", args->memory_triangles)->check(CLI::Range(200, 50'000'000));
+      memory->add_option("--threads", args->memory_threads)->check(CLI::Range(1, 256));
+      return [args, paper, memory] {
+        if (paper->parsed()) return run_paper(*args);
+        return memory->parsed() ? run_memory(*args) : run_scale(*args);
+      };
     }};
 
 }  // namespace

@@ -24,6 +24,18 @@ TEST(CliBench, UnknownOptionAndBadValues) {
   expect_usage_error("bench scale --max-triangles 5", {"--max-triangles"});
   expect_usage_error("bench scale --repetitions 1000", {"--repetitions"});
   expect_usage_error("bench scale --min-seconds -1", {"--min-seconds"});
+  expect_usage_error("bench memory --scene nope", {"--scene"});
+  expect_usage_error("bench memory --triangles 5", {"--triangles"});
+}
+
+TEST(CliBench, MemoryOfOneRowIsAFigurePerTriangle) {
+  // What `bench scale` runs in a child process for each row: bytes per triangle, alone.
+  const RunResult r = run_cli("bench memory --scene folded --triangles 2000 --threads 2");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const double bytes = std::stod(r.output);
+  // At least the BVH's node records (64 B per triangle), and far from a leak's size.
+  EXPECT_GT(bytes, 64.0) << r.output;
+  EXPECT_LT(bytes, 10'000.0) << r.output;
 }
 
 TEST(CliBench, ScaleWritesOneRowPerThreadCountWithPairedSpeedUps) {
@@ -65,6 +77,9 @@ TEST(CliBench, ScaleWritesOneRowPerThreadCountWithPairedSpeedUps) {
   // The same step on one and two threads finds the same collisions, and some.
   EXPECT_EQ(rows[0][collisions], rows[1][collisions]);
   EXPECT_GT(std::stoll(rows[0][collisions]), 0);
+  // A folded cloth's root is never certified: every step refits the boxes.
+  EXPECT_EQ(rows[0][column("boxes_refitted")], "1");
+  EXPECT_GT(std::stod(rows[0][column("bytes_per_triangle")]), 64.0);
 }
 
 TEST(CliBench, MissingSceneFileIsNamed) {

@@ -140,7 +140,7 @@ struct Timings {
 // One row per thread count of `options`, timed in rounds: each round runs one step on each
 // thread count in turn, so that the machine's drifts in speed fall on all of them alike
 // and the ratio of two thread counts within a round is a paired figure.
-std::vector<ScaleRow> measure(const std::string& name, const ScaleScene& scene,
+std::vector<ScaleRow> measure(const std::string& name, Index target, const ScaleScene& scene,
                               const ScaleOptions& options) {
   const std::size_t configs = options.threads.size();
   std::vector<ScaleRow> rows(configs);
@@ -148,7 +148,9 @@ std::vector<ScaleRow> measure(const std::string& name, const ScaleScene& scene,
     rows[i].scene = name;
     rows[i].threads = options.threads[i];
     rows[i].triangles = static_cast<Index>(scene.mesh.faces.rows());
-    rows[i].bytes_per_triangle = bytes_per_triangle(scene, options.threads[i]);
+    rows[i].bytes_per_triangle = options.memory_probe
+                                     ? options.memory_probe(name, target, options.threads[i])
+                                     : bytes_per_triangle(scene, options.threads[i]);
   }
   const TriangleMesh mesh(static_cast<Index>(scene.mesh.vertices.rows()), scene.mesh.faces);
   std::vector<std::unique_ptr<SelfCollisionDetector>> detectors;
@@ -188,6 +190,7 @@ std::vector<ScaleRow> measure(const std::string& name, const ScaleScene& scene,
     row.radial_view_ms = median(t.radial);
     row.low_level_ms = median(t.low), row.ccd_ms = median(t.ccd), row.total_ms = median(t.total);
     row.floor_ms = median(t.floor);
+    row.boxes_refitted = t.stats.boxes_refitted != 0;
     row.speedup = median(round_speedups[i]);
     row.ctps = t.stats.candidate_triangle_pairs;
     row.vf = t.stats.vf_tested, row.ee = t.stats.ee_tested;
@@ -207,6 +210,15 @@ std::string with_commas(std::int64_t value) {
 }
 
 }  // namespace
+
+double scale_bytes_per_triangle(const std::string& scene, Index target_triangles, int threads) {
+  const ScaleScene measured = make_scene(scene, target_triangles);
+  // What a process pays once, whatever the mesh (worker threads and their stacks, the
+  // allocator's per-thread arenas), is paid first on a small mesh, so that the figure is
+  // what grows with the mesh.
+  bytes_per_triangle(make_scene(scene, 200), threads);
+  return bytes_per_triangle(measured, threads);
+}
 
 std::vector<std::string> scale_scene_names() {
   return {"cloth", "folded", "sleeve"};
@@ -232,7 +244,7 @@ std::vector<ScaleRow> run_scale_benchmark(const ScaleOptions& options) {
       if (options.progress) {
         options.progress(fmt::format("{} {} triangles", name, scene.mesh.faces.rows()));
       }
-      for (ScaleRow& row : measure(name, scene, options)) rows.push_back(std::move(row));
+      for (ScaleRow& row : measure(name, target, scene, options)) rows.push_back(std::move(row));
     }
   }
   return rows;
@@ -241,14 +253,15 @@ std::vector<ScaleRow> run_scale_benchmark(const ScaleOptions& options) {
 std::string scale_csv(const std::vector<ScaleRow>& rows) {
   std::string csv =
       "scene,threads,triangles,floor_ms,refit_ms,traversal_ms,radial_view_ms,low_level_ms,ccd_ms,"
-      "total_ms,speedup,ctps,vf,ee,collisions,pairs_per_collision,bytes_per_triangle,peak_mib\n";
+      "total_ms,speedup,ctps,vf,ee,collisions,pairs_per_collision,bytes_per_triangle,peak_mib,"
+      "boxes_refitted\n";
   for (const ScaleRow& r : rows) {
     csv += fmt::format(
         "{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},"
-        "{},{},{},{},{:.3f},{:.1f},{:.1f}\n",
+        "{},{},{},{},{:.3f},{:.1f},{:.1f},{:d}\n",
         r.scene, r.threads, r.triangles, r.floor_ms, r.refit_ms, r.traversal_ms, r.radial_view_ms,
         r.low_level_ms, r.ccd_ms, r.total_ms, r.speedup, r.ctps, r.vf, r.ee, r.collisions,
-        r.pairs_per_collision(), r.bytes_per_triangle, r.peak_mib);
+        r.pairs_per_collision(), r.bytes_per_triangle, r.peak_mib, r.boxes_refitted ? 1 : 0);
   }
   return csv;
 }
@@ -261,12 +274,13 @@ std::string scale_markdown(const std::vector<ScaleRow>& rows) {
       "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const ScaleRow& r : rows) {
     md += fmt::format(
-        "| {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f}× | "
+        "| {} | {} | {} | {:.2f} | {:.2f}{} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f}× "
+        "| "
         "{:.2f} | {} | {} | {} | {:.2f} | {:.0f} |\n",
-        r.scene, r.threads, with_commas(r.triangles), r.floor_ms, r.refit_ms, r.traversal_ms,
-        r.radial_view_ms, r.low_level_ms, r.ccd_ms, r.total_ms, r.speedup, r.total_ms - r.ccd_ms,
-        with_commas(r.ctps), with_commas(r.vf + r.ee), with_commas(r.collisions),
-        r.pairs_per_collision(), r.bytes_per_triangle);
+        r.scene, r.threads, with_commas(r.triangles), r.floor_ms, r.refit_ms,
+        r.boxes_refitted ? "" : "*", r.traversal_ms, r.radial_view_ms, r.low_level_ms, r.ccd_ms,
+        r.total_ms, r.speedup, r.total_ms - r.ccd_ms, with_commas(r.ctps), with_commas(r.vf + r.ee),
+        with_commas(r.collisions), r.pairs_per_collision(), r.bytes_per_triangle);
   }
   return md;
 }

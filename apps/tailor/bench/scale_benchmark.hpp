@@ -26,10 +26,14 @@ struct ScaleRow {
   double speedup = 1;
   double refit_ms = 0, traversal_ms = 0, radial_view_ms = 0, low_level_ms = 0, ccd_ms = 0,
          total_ms = 0;
+  /// Whether the timed steps refitted the BVH's boxes: false when the root stayed certified
+  /// from step to step, and the refit was the direction masks alone.
+  bool boxes_refitted = true;
   std::int64_t ctps = 0, vf = 0, ee = 0, collisions = 0;
-  /// Peak memory of the detector (topology, BVH, culling data, buffers of a step) per
+  /// Peak memory of the detector (topology, BVH, culling data, buffers of two steps) per
   /// triangle: the rise of the peak resident set size over its value before the mesh
-  /// topology was built; the positions of the scene are not counted.
+  /// topology was built; the positions of the scene are not counted. Measured in a fresh
+  /// process when ScaleOptions::memory_probe is set.
   double bytes_per_triangle = 0;
   double peak_mib = 0;  ///< peak resident memory of the whole process so far
 
@@ -54,7 +58,17 @@ struct ScaleOptions {
   /// timed only three times.
   double min_seconds = 0.5;
   std::function<void(const std::string&)> progress;  ///< called before each configuration
+  /// When set, gives ScaleRow::bytes_per_triangle for (scene, target triangles, threads),
+  /// e.g. from scale_bytes_per_triangle() in a fresh process. Otherwise it is measured in
+  /// this process, where it moves by tens of bytes with what the process did before (the
+  /// allocator's free lists and its mmap threshold keep the history of earlier scenes).
+  std::function<double(const std::string&, Index, int)> memory_probe;
 };
+
+/// ScaleRow::bytes_per_triangle of a scene of about `target_triangles` on `threads`
+/// threads, measured in this process (the CLI runs it alone in a child process) after a
+/// run on a small mesh of the same scene, which pays what a process pays once.
+double scale_bytes_per_triangle(const std::string& scene, Index target_triangles, int threads);
 
 /// The scene names run_scale_benchmark accepts.
 std::vector<std::string> scale_scene_names();
