@@ -95,22 +95,34 @@ void BM_DetectFoldedStep(benchmark::State& state) {
   detect_step(state, folded_scene(state.range(0)), static_cast<int>(state.range(1)));
 }
 
-// Refitting swept boxes and direction masks (or boxes only).
-void refit(benchmark::State& state, bool with_directions) {
+// Refitting swept boxes and direction masks, boxes only, or masks only (what a step whose
+// root stays certified refits).
+enum class RefitKind { boxes_and_directions, boxes, directions };
+void refit(benchmark::State& state, RefitKind kind) {
   const Scene& s = scene(static_cast<int>(state.range(0)), state.range(2) / 100.0);
   MeshBvh bvh(*s.mesh, s.x0);
   tbb::task_arena arena(static_cast<int>(state.range(1)));
   for (auto _ : state) {
-    arena.execute([&] { bvh.refit(s.x0, s.x1, with_directions); });
+    arena.execute([&] {
+      if (kind == RefitKind::directions) {
+        bvh.refit_directions(s.x0, s.x1);
+      } else {
+        bvh.refit(s.x0, s.x1, kind == RefitKind::boxes_and_directions);
+      }
+    });
     benchmark::DoNotOptimize(bvh.box(0));
+    benchmark::DoNotOptimize(bvh.direction_mask(0));
   }
   state.counters["triangles"] = s.mesh->num_faces();
 }
 void BM_RefitOnly(benchmark::State& state) {
-  refit(state, true);
+  refit(state, RefitKind::boxes_and_directions);
 }
 void BM_RefitBoxesOnly(benchmark::State& state) {
-  refit(state, false);
+  refit(state, RefitKind::boxes);
+}
+void BM_RefitDirectionsOnly(benchmark::State& state) {
+  refit(state, RefitKind::directions);
 }
 
 // The floor the refit is measured against (as in `tailor bench scale`): every face's
@@ -189,6 +201,7 @@ BENCHMARK(BM_DetectFoldedStep)
     ->UseRealTime();
 BENCHMARK(BM_RefitOnly)->Apply(sizes);
 BENCHMARK(BM_RefitBoxesOnly)->Apply(sizes);
+BENCHMARK(BM_RefitDirectionsOnly)->Apply(sizes);
 BENCHMARK(BM_SweptBoxFloor)->Apply(sizes);
 BENCHMARK(BM_DirectionMaskKernel);
 BENCHMARK(BM_ContourTestOfRoot)

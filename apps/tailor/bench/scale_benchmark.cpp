@@ -274,9 +274,8 @@ std::string scale_markdown(const std::vector<ScaleRow>& rows) {
       "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const ScaleRow& r : rows) {
     md += fmt::format(
-        "| {} | {} | {} | {:.2f} | {:.2f}{} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f}× "
-        "| "
-        "{:.2f} | {} | {} | {} | {:.2f} | {:.0f} |\n",
+        "| {} | {} | {} | {:.2f} | {:.2f}{} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | "
+        "{:.2f}× | {:.2f} | {} | {} | {} | {:.2f} | {:.0f} |\n",
         r.scene, r.threads, with_commas(r.triangles), r.floor_ms, r.refit_ms,
         r.boxes_refitted ? "" : "*", r.traversal_ms, r.radial_view_ms, r.low_level_ms, r.ccd_ms,
         r.total_ms, r.speedup, r.total_ms - r.ccd_ms, with_commas(r.ctps), with_commas(r.vf + r.ee),
