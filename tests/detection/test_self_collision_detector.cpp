@@ -35,6 +35,9 @@ TEST(SelfCollisionDetector, RefusesNonFiniteAndMismatchedPositions) {
               "x0 has a non-finite coordinate at vertex 300");
     EXPECT_EQ(error_of(detector, grid.vertices, bad),
               "x1 has a non-finite coordinate at vertex 300");
+    Positions worse = grid.vertices;
+    worse(7, 0) = -std::numeric_limits<double>::infinity();
+    EXPECT_EQ(error_of(detector, bad, worse), "x0 has a non-finite coordinate at vertex 300");
     EXPECT_EQ(error_of(detector, grid.vertices, grid.vertices.topRows(10)),
               "x1 has 10 vertices, the mesh has 441");
     EXPECT_THROW(SelfCollisionDetector(mesh, bad, config), InputError);

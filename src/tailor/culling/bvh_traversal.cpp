@@ -22,36 +22,37 @@ class CandidateTraversal::Walk {
        tbb::enumerable_thread_specific<ThreadOutput>& outputs)
       : m_mesh(mesh), m_options(options), m_outputs(outputs) {}
 
-  // Whether an inner node's cone and contour certify it (then nothing below it can
-  // collide); `culled` is set when its cone alone skips it (the contour test is off).
-  bool certifies(const MeshBvh& bvh, const NodeContours& contours, StepPositions step, Index node,
-                 ThreadOutput& out, bool& culled) {
-    culled = false;
-    if (!m_options.normal_cones) return false;
+  // What the normal cone of an inner node says about its self-test.
+  enum class ConeVerdict {
+    open,       // test below it
+    skipped,    // the cone alone skips it (the contour test is off: not a certificate)
+    certified,  // cone and contour: nothing below it can collide
+  };
+  ConeVerdict cone_verdict(const MeshBvh& bvh, const NodeContours& contours, StepPositions step,
+                           Index node, ThreadOutput& out) {
+    if (!m_options.normal_cones) return ConeVerdict::open;
     const std::optional<Vec3> axis = bvh.acute_axis(node);
-    if (!axis) return false;
+    if (!axis) return ConeVerdict::open;
     if (!m_options.contour_test) {
       ++out.counts.nodes_culled_by_cones;
-      culled = true;
-      return false;
+      return ConeVerdict::skipped;
     }
     ++out.counts.contour_tests;
     if (contours.has_single_loop(node) &&
         contour_stays_simple(contours.loop(node), step.x0, step.x1, *axis)) {
       ++out.counts.nodes_culled_by_cones;
-      return true;
+      return ConeVerdict::certified;
     }
     ++out.counts.contour_tests_failed;
-    return false;
+    return ConeVerdict::open;
   }
 
   // Returns true when the node was certified by its cone and the contour test.
   bool self(const MeshBvh& bvh, const NodeContours& contours, StepPositions step, Index node,
             ThreadOutput& out) {
     if (bvh.is_leaf(node)) return false;
-    bool culled = false;
-    if (certifies(bvh, contours, step, node, out, culled)) return true;
-    if (culled) return false;
+    const ConeVerdict verdict = cone_verdict(bvh, contours, step, node, out);
+    if (verdict != ConeVerdict::open) return verdict == ConeVerdict::certified;
     const Index left = bvh.left(node), right = bvh.right(node);
     if (bvh.size(node) > kTaskGrain) {
       tbb::parallel_invoke([&] { self(bvh, contours, step, left, m_outputs.local()); },
@@ -125,9 +126,9 @@ bool CandidateTraversal::self(const MeshBvh& bvh, const NodeContours& contours, 
 bool CandidateTraversal::certify_root(const MeshBvh& bvh, const NodeContours& contours,
                                       StepPositions step, const TraversalOptions& options) {
   if (bvh.empty() || bvh.is_leaf(0)) return false;
-  bool culled = false;
   return Walk(*m_mesh, options, m_outputs)
-      .certifies(bvh, contours, step, 0, m_outputs.local(), culled);
+             .cone_verdict(bvh, contours, step, 0, m_outputs.local()) ==
+         Walk::ConeVerdict::certified;
 }
 
 std::vector<std::span<const TrianglePair>> CandidateTraversal::blocks() const {
