@@ -11,7 +11,8 @@ namespace tailor {
 struct DetectionStats {
   // High level.
   std::int64_t boxes_refitted = 0;            ///< 1 when the step refitted the BVH's boxes (a
-                                              ///< step whose root is certified needs none)
+                                              ///< step whose root is certified needs none);
+                                              ///< summed, the steps that did
   std::int64_t node_pairs_visited = 0;        ///< BVH node pairs whose boxes were tested
   std::int64_t nodes_culled_by_cones = 0;     ///< nodes whose self-test the normal cone skipped
   std::int64_t contour_tests = 0;             ///< contour tests run (the node's mask was not empty)
