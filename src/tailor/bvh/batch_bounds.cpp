@@ -79,13 +79,8 @@ void batch_bounds_eight_lanes(const MovingTriangleBatch& batch, BatchBounds& bou
 }  // namespace detail
 
 void batch_bounds(const MovingTriangleBatch& batch, BatchBounds& bounds) {
-  if (lanes::has_avx512()) {
-    detail::batch_bounds_eight_lanes(batch, bounds);
-  } else if (lanes::has_avx2()) {
-    detail::batch_bounds_four_lanes(batch, bounds);
-  } else {
-    detail::batch_bounds_two_lanes(batch, bounds);
-  }
+  lanes::widest(detail::batch_bounds_eight_lanes, detail::batch_bounds_four_lanes,
+                detail::batch_bounds_two_lanes)(batch, bounds);
 }
 
 }  // namespace tailor

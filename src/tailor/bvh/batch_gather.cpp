@@ -67,11 +67,8 @@ void gather_batch_four_lanes(const double* x0, const double* x1,
 
 void gather_batch(const double* x0, const double* x1, std::span<const std::array<Index, 3>> faces,
                   MovingTriangleBatch& batch) {
-  if (lanes::has_avx2()) {
-    detail::gather_batch_four_lanes(x0, x1, faces, batch);
-  } else {
-    detail::gather_batch_one_by_one(x0, x1, faces, batch);
-  }
+  lanes::widest(detail::gather_batch_four_lanes, detail::gather_batch_one_by_one)(x0, x1, faces,
+                                                                                  batch);
 }
 
 }  // namespace tailor

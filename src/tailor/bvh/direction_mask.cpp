@@ -223,13 +223,8 @@ Vec3 mask_axis(DirectionMask mask) {
 
 void lane_masks(const MovingTriangleBatch& batch, LaneMasks& masks) {
   if (batch.count == 0) return;
-  if (lanes::has_avx512()) {
-    detail::lane_masks_avx512(batch, masks);
-  } else if (lanes::has_avx2()) {
-    detail::lane_masks_avx2(batch, masks);
-  } else {
-    detail::lane_masks_sse2(batch, masks);
-  }
+  lanes::widest(detail::lane_masks_avx512, detail::lane_masks_avx2, detail::lane_masks_sse2)(batch,
+                                                                                             masks);
 }
 
 DirectionMask and_of_masks(const LaneMasks& masks, int begin, int end) {

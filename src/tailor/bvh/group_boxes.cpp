@@ -87,11 +87,8 @@ void write_group_boxes_avx2(const BatchBounds& bounds, int first_lane, std::uint
 
 void write_group_boxes(const BatchBounds& bounds, int first_lane, std::uint32_t leaf_bits,
                        int count, FloatBox* first, std::size_t stride) {
-  if (lanes::has_avx2()) {
-    detail::write_group_boxes_avx2(bounds, first_lane, leaf_bits, count, first, stride);
-  } else {
-    detail::write_group_boxes_sse2(bounds, first_lane, leaf_bits, count, first, stride);
-  }
+  lanes::widest(detail::write_group_boxes_avx2, detail::write_group_boxes_sse2)(
+      bounds, first_lane, leaf_bits, count, first, stride);
 }
 
 }  // namespace tailor

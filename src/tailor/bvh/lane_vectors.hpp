@@ -61,5 +61,17 @@ inline bool has_avx512() {
       __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") && has_avx2();
   return avx512;
 }
+/// The widest build of a kernel this processor runs: `avx512` (F and DQ), else `avx2`,
+/// else `sse2` (every x86-64 processor). Each kernel's public entry calls the one this
+/// picks.
+template <class Kernel>
+Kernel widest(Kernel avx512, Kernel avx2, Kernel sse2) {
+  return has_avx512() ? avx512 : has_avx2() ? avx2 : sse2;
+}
+/// The same for a kernel without an AVX-512 build.
+template <class Kernel>
+Kernel widest(Kernel avx2, Kernel sse2) {
+  return has_avx2() ? avx2 : sse2;
+}
 
 }  // namespace tailor::lanes
