@@ -1,4 +1,5 @@
-// Every combination of culling stages reports exactly the brute-force collisions.
+// Every combination of the work-only culling stages (SettingEffect::work_only; the contour
+// test stays on: off, it is unsound) reports exactly the brute-force collisions.
 
 #include "support/sanitized.hpp"
 #include <gtest/gtest.h>

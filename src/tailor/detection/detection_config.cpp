@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <nlohmann/json.hpp>
+#include <type_traits>
+
 #include "tailor/geometry/error.hpp"
 
 namespace tailor {
@@ -29,6 +32,41 @@ DetectionConfig DetectionConfig::preset(std::string_view name) {
 
 std::vector<std::string> DetectionConfig::preset_names() {
   return {"basic", "curtis", "tang", "paper"};
+}
+
+std::string_view to_string(SettingEffect effect) {
+  switch (effect) {
+    case SettingEffect::work_only:
+      return "work only";
+    case SettingEffect::output_only:
+      return "output only";
+    case SettingEffect::unsound_when_off:
+      return "unsound when off";
+    case SettingEffect::defines_result:
+      return "defines the result";
+  }
+  return "?";
+}
+
+std::string setting_value(const DetectionConfig& config, const DetectionSetting& setting) {
+  return std::visit(
+      [&](auto member) -> std::string {
+        const auto value = config.*member;
+        if constexpr (std::is_same_v<std::remove_cv_t<decltype(value)>, bool>) {
+          return value ? "true" : "false";
+        } else {
+          return fmt::format("{}", value);
+        }
+      },
+      setting.member);
+}
+
+void to_json(nlohmann::json& json, const DetectionConfig& config) {
+  json = nlohmann::json::object();
+  for (const DetectionSetting& setting : kDetectionSettings) {
+    std::visit([&](auto member) { json[std::string(setting.name)] = config.*member; },
+               setting.member);
+  }
 }
 
 }  // namespace tailor

@@ -12,6 +12,7 @@
 #include "tailor/culling/node_contours.hpp"
 #include "tailor/culling/radial_view_culling.hpp"
 #include "tailor/detection/exact_pair_tests.hpp"
+#include "tailor/detection/stage_counts.hpp"
 #include "tailor/geometry/error.hpp"
 #include "tailor/geometry/finite_positions.hpp"
 #include "tailor/geometry/stopwatch.hpp"
@@ -116,22 +117,12 @@ struct SelfCollisionDetector::Impl {
       stats.radial_pairs_culled += traversal.remove_if(
           [&](const TrianglePair& p) { return radial.classified_clean(p.first, p.second); });
     }
-    stats.clusters_classified = counts.clusters_classified;
-    stats.clusters_certified = counts.clusters_certified;
-    stats.radial_positive = counts.triangles_positive;
-    stats.radial_negative = counts.triangles_negative;
-    stats.radial_undetermined = counts.triangles_undetermined;
+    record_counts(stats, counts);
   }
 
   void record_high_level(DetectionStats& stats) {
-    const TraversalCounts counts = traversal.counts();
-    stats.node_pairs_visited = counts.node_pairs_visited;
-    stats.nodes_culled_by_cones = counts.nodes_culled_by_cones;
-    stats.contour_tests = counts.contour_tests;
-    stats.contour_tests_failed = counts.contour_tests_failed;
-    stats.candidate_triangle_pairs = traversal.size();
-    stats.isolated_vf_pairs = static_cast<std::int64_t>(isolated.vertex_face.size());
-    stats.isolated_ee_pairs = static_cast<std::int64_t>(isolated.edge_edge.size());
+    record_counts(stats, traversal.counts(), traversal.size());
+    record_counts(stats, isolated);
   }
 
   // One round: the pairs the generator holds through the exact CCD.
@@ -163,17 +154,7 @@ struct SelfCollisionDetector::Impl {
         test_round(x0, x1, stats);
       }
     });
-    const LowLevelCounts low = generator.counts();
-    stats.vf_generated = low.vf_generated;
-    stats.ee_generated = low.ee_generated;
-    stats.vf_after_boxes = low.vf_after_boxes;
-    stats.ee_after_boxes = low.ee_after_boxes;
-    stats.vf_after_filter = low.vf_after_filter;
-    stats.ee_after_filter = low.ee_after_filter;
-    stats.vf_after_projection = low.vf_after_projection;
-    stats.ee_after_projection = low.ee_after_projection;
-    stats.vf_tested = low.vf_after_projection;
-    stats.ee_tested = low.ee_after_projection;
+    record_counts(stats, generator.counts());
     stats.ccd_exact_fallbacks = tester.exact_fallbacks();
   }
 
@@ -201,8 +182,7 @@ struct SelfCollisionDetector::Impl {
       const auto gather = SteadyClock::now();
       result.collisions = tester.take_collisions(mesh);
       stats.ccd_ms += milliseconds_since(gather);
-      stats.vf_colliding = static_cast<std::int64_t>(result.collisions.vertex_face.size());
-      stats.ee_colliding = static_cast<std::int64_t>(result.collisions.edge_edge.size());
+      record_counts(stats, result.collisions);
       stats.total_ms = milliseconds_since(start);
     });
     return result;
