@@ -167,17 +167,17 @@ void print_summary(const SequenceChecker& checker, const FrameSources& sources,
 int run_check(const CheckArgs& args) {
   const InterruptGuard interrupt;
   const FrameSources sources = resolve_frame_sources(args.frames, args.obstacle);
+  SequenceCheckOptions options;
+  options.detection = args.detection.config();
   std::optional<tbb::global_control> parallelism;
-  if (args.detection.threads > 0) {
+  if (options.detection.threads > 0) {
     parallelism.emplace(tbb::global_control::max_allowed_parallelism,
-                        static_cast<std::size_t>(args.detection.threads));
+                        static_cast<std::size_t>(options.detection.threads));
   }
   std::unique_ptr<JsonLinesFile> json_lines;
   if (!args.json_lines_path.empty())
     json_lines = std::make_unique<JsonLinesFile>(args.json_lines_path);
 
-  SequenceCheckOptions options;
-  options.detection = args.detection.config();
   options.first_frame = args.from.value_or(0);
   options.last_frame = args.to.value_or(-1);
   options.check_frames = !args.no_frame_check;

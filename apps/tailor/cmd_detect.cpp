@@ -106,6 +106,7 @@ int run_detect(const DetectArgs& args) {
       dump_queries(args.dump_prefix, mesh, t0.vertices, t1.vertices, config,
                    result.candidate_triangle_pairs);
     }
+    out["config"] = config;  // every setting (docs/settings.md)
     out["stats"] = result.stats;
     collisions = std::move(result.collisions);
   }
@@ -133,7 +134,8 @@ const CommandRegistration detect_registration{
           ->check(CLI::ExistingFile);
       CLI::Option* brute = command->add_flag("--brute-force", args->brute_force,
                                              "Test every feature pair (the oracle)");
-      command->add_option("--json", args->json_path, "Write collisions and statistics as JSON");
+      command->add_option("--json", args->json_path,
+                          "Write collisions, statistics and the settings used as JSON");
       command
           ->add_option("--observers", args->observers_path,
                        "Radial-view section loops: JSON {\"loops\": [[vertex ids], ...]}")

@@ -1,66 +1,82 @@
 #pragma once
 /// @file
-/// The `--method` preset and per-stage switches shared by every command that detects.
+/// The `--method` preset and one option per DetectionConfig setting (kDetectionSettings:
+/// `--cones/--no-cones`-style switches, `--threads N`), shared by every command that detects.
 
 #include <CLI/CLI.hpp>
-#include <optional>
+#include <cctype>
+#include <functional>
+#include <limits>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include "tailor/detection/detection_config.hpp"
 #include "thread_limit.hpp"
 
 namespace tailor::cli {
 
-/// Options selecting a DetectionConfig: a preset and single-stage overrides.
+/// Options selecting a DetectionConfig: a preset and single-setting overrides, applied in
+/// the order given (the last of `--cones --no-cones` wins).
 struct DetectionOptions {
   std::string method = "paper";
-  std::optional<bool> normal_cones, contour_test, adjacency_culling, feature_assignment,
-      primitive_boxes, coplanarity_filter, projection_filter, radial_view;
-  int threads = 0;
 
-  /// Adds `--method`, `--threads` and `--cones/--no-cones`-style switches to `command`.
+  /// Adds `--method` and an option for every setting of kDetectionSettings that has a CLI
+  /// spelling to `command`.
   void add_to(CLI::App& command) {
     command.add_option("--method", method, "Culling preset: basic, curtis, tang, paper")
         ->check(CLI::IsMember(DetectionConfig::preset_names()))
         ->capture_default_str();
-    command.add_option("--threads", threads, "Worker threads (0: all cores)")
-        ->check(thread_count_validator());
-    add_switch(command, "cones", normal_cones, "continuous normal-cone culling");
-    add_switch(command, "contour", contour_test,
-               "the contour test of cone culling (off is unsound; for comparison only)");
-    add_switch(command, "adjacency", adjacency_culling, "adjacency culling + isolated set");
-    add_switch(command, "assignment", feature_assignment, "feature assignment");
-    add_switch(command, "primitive-boxes", primitive_boxes, "primitive bounding boxes");
-    add_switch(command, "filter", coplanarity_filter, "non-coplanarity filter");
-    add_switch(command, "projection", projection_filter, "projection filter");
-    add_switch(command, "radial", radial_view, "radial-view culling");
+    for (const DetectionSetting& setting : kDetectionSettings) {
+      if (setting.cli.empty()) continue;
+      std::visit([&](auto member) { add_option(command, setting, member); }, setting.member);
+    }
   }
 
   /// The preset with the overrides applied.
   DetectionConfig config() const {
     DetectionConfig config = DetectionConfig::preset(method);
-    auto apply = [](bool& field, const std::optional<bool>& value) {
-      if (value) field = *value;
-    };
-    apply(config.normal_cones, normal_cones);
-    apply(config.contour_test, contour_test);
-    apply(config.adjacency_culling, adjacency_culling);
-    apply(config.feature_assignment, feature_assignment);
-    apply(config.primitive_boxes, primitive_boxes);
-    apply(config.coplanarity_filter, coplanarity_filter);
-    apply(config.projection_filter, projection_filter);
-    apply(config.radial_view, radial_view);
-    config.threads = threads;
+    for (const auto& apply : m_overrides) apply(config);
     return config;
   }
 
  private:
-  static void add_switch(CLI::App& command, const std::string& name, std::optional<bool>& value,
-                         const std::string& what) {
-    command.add_flag_callback(
-        "--" + name, [&value] { value = true; }, "Turn on " + what);
-    command.add_flag_callback(
-        "--no-" + name, [&value] { value = false; }, "Turn off " + what);
+  std::vector<std::function<void(DetectionConfig&)>> m_overrides;
+
+  // A switch: `--NAME` turns it on, `--no-NAME` off.
+  void add_option(CLI::App& command, const DetectionSetting& setting,
+                  bool DetectionConfig::*member) {
+    const std::string name(setting.cli), help(setting.help);
+    for (const bool on : {true, false}) {
+      command.add_flag_callback(
+          (on ? "--" : "--no-") + name,
+          [this, member, on] {
+            m_overrides.emplace_back([member, on](DetectionConfig& c) { c.*member = on; });
+          },
+          (on ? "Turn on " : "Turn off ") + help);
+    }
+  }
+
+  // A number: `--NAME VALUE` within the setting's range (`--threads`: at most
+  // max_threads(), thread_limit.hpp).
+  template <class T>
+  void add_option(CLI::App& command, const DetectionSetting& setting, T DetectionConfig::*member) {
+    static_assert(std::is_arithmetic_v<T>);
+    std::string help(setting.help);
+    if (!help.empty()) help[0] = static_cast<char>(std::toupper(help[0]));
+    CLI::Option* option = command.add_option_function<T>(
+        "--" + std::string(setting.cli),
+        [this, member](const T& value) {
+          m_overrides.emplace_back([member, value](DetectionConfig& c) { c.*member = value; });
+        },
+        help);
+    if (setting.name == "threads") {
+      option->check(thread_count_validator());
+    } else {
+      const T max =
+          setting.max == kUnbounded ? std::numeric_limits<T>::max() : static_cast<T>(setting.max);
+      option->check(CLI::Range(static_cast<T>(setting.min), max));
+    }
   }
 };
 
