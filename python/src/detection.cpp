@@ -1,6 +1,7 @@
 /// @file
-/// `tailor.detect`, `tailor.brute_force`, `tailor.SelfCollisionDetector`,
-/// `tailor.DetectionConfig` and `tailor.DetectionResult`.
+/// `tailor.detect` (the one-off form), `tailor.brute_force`, `tailor.SelfCollisionDetector`
+/// (for many steps of one mesh) and `tailor.DetectionResult` (DetectionConfig:
+/// detection_config.cpp).
 
 #include <fmt/format.h>
 #include <pybind11/stl.h>
@@ -146,51 +147,7 @@ class PyDetector {
 
 }  // namespace
 
-DetectionConfig detection_config(py::handle method, int threads) {
-  if (threads < 0) throw py::value_error(fmt::format("threads must be ≥ 0, got {}", threads));
-  DetectionConfig config;
-  if (py::isinstance<DetectionConfig>(method)) {
-    config = method.cast<DetectionConfig>();
-    if (threads > 0) config.threads = threads;
-  } else if (py::isinstance<py::str>(method)) {
-    config = DetectionConfig::preset(method.cast<std::string>());
-    config.threads = threads;
-  } else {
-    throw py::value_error("method must be a preset name (str) or a DetectionConfig");
-  }
-  return config;
-}
-
 void bind_detection(py::module_& m) {
-  py::class_<DetectionConfig>(m, "DetectionConfig",
-                              "Switches of every culling stage; every combination reports the "
-                              "same collisions (only the work differs).")
-      .def(py::init<>())
-      .def_static("preset", &DetectionConfig::preset, py::arg("name"),
-                  "basic, curtis, tang or paper (the paper's Table 1 rows).")
-      .def_static("preset_names", &DetectionConfig::preset_names)
-      .def_readwrite("normal_cones", &DetectionConfig::normal_cones)
-      .def_readwrite("contour_test", &DetectionConfig::contour_test)
-      .def_readwrite("adjacency_culling", &DetectionConfig::adjacency_culling)
-      .def_readwrite("feature_assignment", &DetectionConfig::feature_assignment)
-      .def_readwrite("primitive_boxes", &DetectionConfig::primitive_boxes)
-      .def_readwrite("coplanarity_filter", &DetectionConfig::coplanarity_filter)
-      .def_readwrite("radial_view", &DetectionConfig::radial_view)
-      .def_readwrite("classify_every_cluster", &DetectionConfig::classify_every_cluster,
-                     "Radial view: classify every cluster each step (fills the statistics "
-                     "radial_positive / negative / undetermined; same collisions, more work).")
-      .def_readwrite("threads", &DetectionConfig::threads)
-      .def("__repr__", [](const DetectionConfig& c) {
-        const auto flag = [](bool on) { return on ? "True" : "False"; };
-        return fmt::format(
-            "tailor.DetectionConfig(normal_cones={}, contour_test={}, adjacency_culling={}, "
-            "feature_assignment={}, primitive_boxes={}, coplanarity_filter={}, radial_view={}, "
-            "threads={})",
-            flag(c.normal_cones), flag(c.contour_test), flag(c.adjacency_culling),
-            flag(c.feature_assignment), flag(c.primitive_boxes), flag(c.coplanarity_filter),
-            flag(c.radial_view), c.threads);
-      });
-
   py::class_<PyDetectionResult>(m, "DetectionResult", "The collisions of one step.")
       .def_readonly("vertex_face", &PyDetectionResult::vertex_face,
                     "(n, 2) int32: vertex id, face id; sorted.")
@@ -205,7 +162,10 @@ void bind_detection(py::module_& m) {
       .def_readonly("vertex_face_toi", &PyDetectionResult::vertex_face_toi, "toi[:n] (a view)")
       .def_readonly("edge_edge_toi", &PyDetectionResult::edge_edge_toi, "toi[n:] (a view)")
       .def_readonly("stats", &PyDetectionResult::stats,
-                    "Per-stage counts and times (ms) as a dict; None for brute_force.")
+                    "Per-stage counts and times (ms) as a dict (keys: stat_fields()); None for "
+                    "brute_force.")
+      .def_static("stat_fields", &stat_fields,
+                  "Every key of `stats` as a dict: name, unit (count or ms), stage, help.")
       .def("__len__", [](const PyDetectionResult& r) { return r.size; })
       .def("__repr__", [](const PyDetectionResult& r) {
         return fmt::format("tailor.DetectionResult({} vertex-face, {} edge-edge)",
@@ -256,8 +216,10 @@ void bind_detection(py::module_& m) {
       },
       py::arg("mesh"), py::arg("x0"), py::arg("x1"), py::kw_only(), py::arg("method") = "paper",
       py::arg("threads") = 0, py::arg("observers") = py::none(),
-      "Every self-collision of one step: `mesh` is a Mesh or (m, 3) faces; x0, x1 are (n, 3) "
-      "positions at the start and end. For many steps of one mesh, use SelfCollisionDetector.");
+      "Every self-collision of one step (the one-off form, as C++ "
+      "tailor::detect_self_collisions): `mesh` is a Mesh or (m, 3) faces; x0, x1 are (n, 3) "
+      "positions at the start and end; `method` a preset name or a DetectionConfig. For many "
+      "steps of one mesh, keep a SelfCollisionDetector (it builds its BVH once).");
 
   m.def(
       "brute_force",

@@ -13,6 +13,7 @@ PYBIND11_MODULE(_tailor, m) {
   python::bind_mesh(m);
   python::bind_io(m);
   python::bind_ccd(m);
+  python::bind_detection_config(m);
   python::bind_detection(m);
   python::bind_sim(m);
   m.def(
