@@ -2,6 +2,7 @@
 # CLI and a tailorConfig.cmake into the prefix, so that a consumer needs only
 #   find_package(tailor CONFIG REQUIRED)
 #   target_link_libraries(app PRIVATE tailor::tailor)   # or tailor::sim
+#   #include "tailor/tailor.hpp"                          // the front door
 # The consumer in examples/ is built against an installed copy by the test below.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
@@ -22,6 +23,8 @@ foreach(module ${TAILOR_CORE_MODULES} ${TAILOR_SIM_MODULES})
   install(DIRECTORY src/tailor/${module} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tailor
           FILES_MATCHING PATTERN "*.hpp")
 endforeach()
+# The front door, tailor/tailor.hpp (the core library's public API in one include).
+install(FILES src/tailor/tailor.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tailor)
 
 install(EXPORT tailorTargets NAMESPACE tailor:: FILE tailorTargets.cmake
         DESTINATION ${TAILOR_INSTALL_CMAKEDIR})

@@ -3,9 +3,7 @@
 //   detect_step t0.ply t1.ply
 #include <cstdio>
 
-#include "tailor/detection/self_collision_detector.hpp"
-#include "tailor/geometry/error.hpp"
-#include "tailor/io/mesh_io.hpp"
+#include "tailor/tailor.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 3) {
@@ -20,8 +18,9 @@ int main(int argc, char** argv) {
       return 2;
     }
     const tailor::TriangleMesh mesh(static_cast<tailor::Index>(t0.vertices.rows()), t0.faces);
-    tailor::SelfCollisionDetector detector(mesh, t0.vertices);  // the paper's preset
-    const tailor::DetectionResult step = detector.detect(t0.vertices, t1.vertices);
+    // One step, the paper's preset (for many steps of one mesh: tailor::SelfCollisionDetector).
+    const tailor::DetectionResult step =
+        tailor::detect_self_collisions(mesh, t0.vertices, t1.vertices);
 
     for (const auto& c : step.collisions.vertex_face) {
       std::printf("vertex %d - face %d at t >= %.6f\n", c.vertex, c.face, c.toi);

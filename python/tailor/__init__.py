@@ -5,6 +5,14 @@ linear time step, found by the two-level culling pipeline of *Self-collision Det
 Optimization Method in the Arm Clothes Simulation* and decided by an exact CCD; plus the
 arm-sleeve cloth simulation it was designed for. See docs/design.md in the repository.
 
+One step: ``tailor.detect(mesh, x0, x1, method="paper")``, the one-off form (C++
+``tailor::detect_self_collisions``); many steps of one mesh: build a
+``SelfCollisionDetector(mesh, x0)`` once and call ``detect(x0, x1)`` per step (the BVH is
+built once). ``method`` is a preset name (basic, curtis, tang, paper) or a DetectionConfig;
+``DetectionConfig.settings()`` lists every setting with its default, range and whether it
+keeps the result exact, ``DetectionResult.stat_fields()`` every key of ``result.stats``
+(docs/settings.md in the repository).
+
 Arrays: positions are (n, 3) float64, faces (m, 3) integer vertex ids. float64
 C-contiguous arrays are read in place where the C++ API allows (CCD batches; the
 `x0`/`x1` buffers of a SelfCollisionDetector); the GIL is released while C++ works. Bad
