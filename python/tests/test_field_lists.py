@@ -25,9 +25,12 @@ def test_every_setting_is_a_documented_property():
     names = [s["name"] for s in SETTINGS]
     # to_dict() comes from the C++ JSON output (the keys `tailor detect --json` writes).
     assert len(set(names)) == len(names)
-    assert set(names) == set(tailor.DetectionConfig().to_dict()), "settings() and to_dict() differ"
-    assert properties(tailor.DetectionConfig) == set(names), \
-        "DetectionConfig's properties are not the settings"
+    as_dict = set(tailor.DetectionConfig().to_dict())
+    assert set(names) == as_dict, f"settings() and to_dict() differ: {set(names) ^ as_dict}"
+    bound = properties(tailor.DetectionConfig)
+    assert not set(names) - bound, f"DetectionConfig misses the properties {set(names) - bound}"
+    extra = bound - set(names)
+    assert not extra, f"DetectionConfig has properties not in the list: {extra}"
     for s in SETTINGS:
         doc = getattr(tailor.DetectionConfig, s["name"]).__doc__
         assert doc and s["help"][1:] in doc and s["effect"] in doc, (s["name"], doc)
@@ -71,7 +74,9 @@ def test_every_statistic_is_a_key_of_stats():
     a, b, c, d = ids[:-1, :-1].ravel(), ids[1:, :-1].ravel(), ids[1:, 1:].ravel(), ids[:-1, 1:].ravel()
     faces = np.concatenate([np.stack([a, b, c], 1), np.stack([a, c, d], 1)])
     stats = tailor.detect(faces, x0, x0 + [0, 0, 0.1]).stats
-    assert sorted(stats) == sorted(f["name"] for f in STAT_FIELDS)
+    names = {f["name"] for f in STAT_FIELDS}
+    assert not names - set(stats), f"DetectionResult.stats misses {names - set(stats)}"
+    assert not set(stats) - names, f"stats has keys not in the list: {set(stats) - names}"
     for f in STAT_FIELDS:
         assert f["unit"] in ("count", "ms") and f["stage"] and f["help"], f
         assert isinstance(stats[f["name"]], int if f["unit"] == "count" else float), f

@@ -135,7 +135,7 @@ TEST(FieldLists, DocsTableIsCurrent) {
     EXPECT_NE(actual.str().find(fmt::format("| `{}` |", f.name)), std::string::npos)
         << path << " misses the statistic " << f.name;
   }
-  EXPECT_EQ(actual.str(), expected)
+  EXPECT_TRUE(actual.str() == expected)
       << path << " is not the table of the field lists; regenerate it:\n  "
       << testing::kSettingsDocsCommand;
 }
