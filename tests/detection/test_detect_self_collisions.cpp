@@ -12,7 +12,7 @@
 namespace tailor {
 namespace {
 
-nlohmann::json counts(const DetectionStats& stats) {
+nlohmann::json step_counts(const DetectionStats& stats) {
   nlohmann::json json = stats;
   for (const DetectionStatField& field : kDetectionStatFields) {
     if (field.is_time()) json.erase(std::string(field.name));
@@ -33,13 +33,13 @@ TEST(DetectSelfCollisions, IsOneStepOfTheDetector) {
       const DetectionResult repeated = detector.detect(step.mesh.vertices, step.x1);
       EXPECT_EQ(once.collisions.size(), truth.size()) << step.name << " " << method;
       EXPECT_EQ(once.collisions.size(), repeated.collisions.size()) << step.name << " " << method;
-      EXPECT_EQ(counts(once.stats), counts(repeated.stats)) << step.name << " " << method;
+      EXPECT_EQ(step_counts(once.stats), step_counts(repeated.stats)) << step.name << " " << method;
     }
     // The default is the paper preset.
-    EXPECT_EQ(counts(detect_self_collisions(mesh, step.mesh.vertices, step.x1).stats),
-              counts(detect_self_collisions(mesh, step.mesh.vertices, step.x1,
-                                            DetectionConfig::preset("paper"))
-                         .stats));
+    EXPECT_EQ(step_counts(detect_self_collisions(mesh, step.mesh.vertices, step.x1).stats),
+              step_counts(detect_self_collisions(mesh, step.mesh.vertices, step.x1,
+                                                 DetectionConfig::preset("paper"))
+                              .stats));
     collisions += truth.size();
   }
   EXPECT_GT(collisions, 0u);
