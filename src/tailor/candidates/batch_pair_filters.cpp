@@ -1,0 +1,135 @@
+#include "tailor/candidates/batch_pair_filters.hpp"
+
+#include <cstring>
+
+#include "tailor/bvh/lane_vectors.hpp"
+#include "tailor/candidates/projection_polynomials.hpp"
+
+namespace tailor {
+namespace {
+
+// The polynomials of every lane, stored by the vector kernel for the per-pair steps: the
+// cubic f (values, then bounds) and up to five quadratics (values, then bounds).
+struct LanePolynomials {
+  alignas(64) double cubic[8][PairBatch::kCapacity];
+  alignas(64) double quadratic[5][6][PairBatch::kCapacity];
+};
+
+// Per-lane outcomes of the vector kernel (0 or all bits set).
+struct LaneFlags {
+  std::int64_t cubic_ok[PairBatch::kCapacity];      // the cubic's range check passed
+  std::int64_t cubic_signed[PairBatch::kCapacity];  // f certainly of one strict sign
+  std::int64_t undecided[PairBatch::kCapacity];     // a coefficient within its bound
+  std::int64_t projected[PairBatch::kCapacity];     // the projection's checks passed
+  std::int64_t excluded[PairBatch::kCapacity];      // excluded on the whole step
+};
+
+// One build of the lanes per instruction set (batch_pair_filter_lanes.inc says why).
+namespace sse2 {
+constexpr int W = 2;
+#include "tailor/candidates/batch_pair_filter_lanes.inc"
+}  // namespace sse2
+#pragma GCC push_options
+#pragma GCC target("avx2")
+namespace avx2 {
+constexpr int W = 4;
+#include "tailor/candidates/batch_pair_filter_lanes.inc"
+}  // namespace avx2
+#pragma GCC pop_options
+#pragma GCC push_options
+#pragma GCC target("avx512f,avx512dq,avx2")
+namespace avx512 {
+constexpr int W = 8;
+#include "tailor/candidates/batch_pair_filter_lanes.inc"
+}  // namespace avx512
+#pragma GCC pop_options
+
+using LaneKernel = void (*)(PairKind, const PairBatch&, LanePolynomials&, LaneFlags&);
+
+template <int N>
+CertifiedBernstein<N> lane_polynomial(const double (&rows)[2 * (N + 1)][PairBatch::kCapacity],
+                                      int lane) {
+  CertifiedBernstein<N> p;
+  for (int c = 0; c <= N; ++c) {
+    p.value[c] = rows[c][lane];
+    p.bound[c] = rows[N + 1 + c][lane];
+  }
+  return p;
+}
+
+// The subdivision below the whole step, for a lane whose whole-step test failed.
+bool halves_excluded(PairKind kind, const LanePolynomials& polys, int lane) {
+  if (kind == PairKind::vertex_face) {
+    projection::VertexFacePolynomials p;
+    p.f = lane_polynomial<3>(polys.cubic, lane);
+    for (int k = 0; k < 3; ++k) p.s[k] = lane_polynomial<2>(polys.quadratic[k], lane);
+    p.o = lane_polynomial<2>(polys.quadratic[3], lane);
+    return projection::halves_excluded(p);
+  }
+  projection::EdgeEdgePolynomials p;
+  p.f = lane_polynomial<3>(polys.cubic, lane);
+  p.g_c = lane_polynomial<2>(polys.quadratic[0], lane);
+  p.g_d = lane_polynomial<2>(polys.quadratic[1], lane);
+  p.h_a = lane_polynomial<2>(polys.quadratic[2], lane);
+  p.h_b = lane_polynomial<2>(polys.quadratic[3], lane);
+  p.m = lane_polynomial<2>(polys.quadratic[4], lane);
+  return projection::halves_excluded(p);
+}
+
+// The exact sign of the coplanarity cubic of one lane (geometry/coplanarity_sign.hpp).
+StepSign exact_lane_sign(const PairBatch& batch, int lane) {
+  Vec3 p[8];
+  for (int r = 0; r < 8; ++r) {
+    p[r] = Vec3(batch.coordinate[3 * r][lane], batch.coordinate[3 * r + 1][lane],
+                batch.coordinate[3 * r + 2][lane]);
+  }
+  return coplanarity_sign(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
+}
+
+void verdicts_with(LaneKernel kernel, PairKind kind, PairBatch& batch, PairFilters filters,
+                   std::span<PairVerdict, PairBatch::kCapacity> verdicts) {
+  for (int row = 0; row < 24; ++row) {
+    for (int i = batch.count; i < batch.padded_count(); ++i) {
+      batch.coordinate[row][i] = batch.coordinate[row][0];
+    }
+  }
+  LanePolynomials polys;
+  LaneFlags flags;
+  kernel(kind, batch, polys, flags);
+  // The order of the one-pair filters (projection_filter.cpp): the certified double signs,
+  // the projection filter, then the exact signs.
+  for (int lane = 0; lane < batch.count; ++lane) {
+    const bool cubic_ok = flags.cubic_ok[lane] != 0;
+    PairVerdict verdict = PairVerdict::may_touch;
+    if (filters.coplanarity && cubic_ok && flags.cubic_signed[lane] != 0) {
+      verdict = PairVerdict::never_coplanar;
+    } else if (filters.projection && cubic_ok && flags.projected[lane] != 0 &&
+               (flags.excluded[lane] != 0 || halves_excluded(kind, polys, lane))) {
+      verdict = PairVerdict::apart_in_projection;
+    } else if (filters.coplanarity && (!cubic_ok || flags.undecided[lane] != 0) &&
+               exact_lane_sign(batch, lane) != StepSign::mixed) {
+      verdict = PairVerdict::never_coplanar;
+    }
+    verdicts[static_cast<std::size_t>(lane)] = verdict;
+  }
+}
+
+}  // namespace
+
+namespace detail {
+
+void pair_verdicts_two_lanes(PairKind kind, PairBatch& batch, PairFilters filters,
+                             std::span<PairVerdict, PairBatch::kCapacity> verdicts) {
+  verdicts_with(sse2::batch_lanes, kind, batch, filters, verdicts);
+}
+
+}  // namespace detail
+
+void pair_verdicts(PairKind kind, PairBatch& batch, PairFilters filters,
+                   std::span<PairVerdict, PairBatch::kCapacity> verdicts) {
+  static const LaneKernel kernel =
+      lanes::widest<LaneKernel>(avx512::batch_lanes, avx2::batch_lanes, sse2::batch_lanes);
+  verdicts_with(kernel, kind, batch, filters, verdicts);
+}
+
+}  // namespace tailor
