@@ -3,13 +3,14 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 
-#include "tailor/candidates/projection_filter.hpp"
+#include "tailor/candidates/batch_pair_filters.hpp"
+
+#include "tailor/candidates/triangle_plane_sides.hpp"
 
 namespace tailor {
 namespace {
-
-using ConstVec3 = Eigen::Map<const Vec3>;
 
 // A moving point: its coordinates at t=0 and t=1 (rows of the row-major positions).
 struct Corner {
@@ -54,11 +55,35 @@ bool contains(const Index* face, Index v) {
   return face[0] == v || face[1] == v || face[2] == v;
 }
 
-struct ThreadSink {
-  std::vector<VertexFacePair>& vertex_face;
-  std::vector<EdgeEdgePair>& edge_edge;
-  LowLevelCounts& counts;
-};
+using ThreadOutput = PrimitivePairGenerator::ThreadOutput;
+
+// Appends a pair that every filter kept.
+void keep(PairKind kind, Index first, Index second, ThreadOutput& out) {
+  if (kind == PairKind::vertex_face) {
+    ++out.counts.vf_after_projection;
+    out.vertex_face.push_back({first, second});
+  } else {
+    ++out.counts.ee_after_projection;
+    out.edge_edge.push_back({first, second});
+  }
+}
+
+// Runs the filters on the pairs waiting in a batch and keeps the survivors.
+void flush(PairKind kind, PairFilters filters, ThreadOutput& out) {
+  PairBatch& batch = kind == PairKind::vertex_face ? out.vertex_face_batch : out.edge_edge_batch;
+  if (batch.count == 0) return;
+  std::array<PairVerdict, PairBatch::kCapacity> verdicts;
+  pair_verdicts(kind, batch, filters, verdicts);
+  std::int64_t& after_filter =
+      kind == PairKind::vertex_face ? out.counts.vf_after_filter : out.counts.ee_after_filter;
+  for (int i = 0; i < batch.count; ++i) {
+    if (verdicts[i] == PairVerdict::never_coplanar) continue;
+    ++after_filter;
+    if (verdicts[i] == PairVerdict::may_touch)
+      keep(kind, batch.first_id[i], batch.second_id[i], out);
+  }
+  batch.count = 0;
+}
 
 // The stages after feature assignment, for one step.
 class Stages {
@@ -74,65 +99,50 @@ class Stages {
 
   Corner at(Index v) const { return corner(m_x0, m_x1, v); }
 
-  // Boxes, DNF and projection filters for VF pair (v, f), the face's corners a, b, c;
-  // `p_box` and `face_box` are their swept boxes.
+  // Boxes for VF pair (v, f), the face's corners a, b, c (`p_box` and `face_box` are their
+  // swept boxes), then the filters. `off_plane`: the triangle filter proved that p never
+  // meets the face's plane.
   void vertex_face(Index v, Index f, Corner p, Corner a, Corner b, Corner c, const Box& p_box,
-                   const Box& face_box, ThreadSink& out) const {
+                   const Box& face_box, bool off_plane, ThreadOutput& out) const {
     ++out.counts.vf_generated;
     if (m_options.primitive_boxes && !overlap(p_box, face_box)) return;
     ++out.counts.vf_after_boxes;
-    if (m_filters.coplanarity || m_filters.projection) {
-      const PairVerdict verdict = vertex_face_verdict(
-          ConstVec3(p.t0), ConstVec3(a.t0), ConstVec3(b.t0), ConstVec3(c.t0), ConstVec3(p.t1),
-          ConstVec3(a.t1), ConstVec3(b.t1), ConstVec3(c.t1), m_filters);
-      if (verdict == PairVerdict::never_coplanar) return;
-      ++out.counts.vf_after_filter;
-      if (verdict == PairVerdict::apart_in_projection) return;
-    } else {
-      ++out.counts.vf_after_filter;
-    }
-    ++out.counts.vf_after_projection;
-    out.vertex_face.push_back({v, f});
+    if (off_plane) return;
+    submit(PairKind::vertex_face, v, f, {a, b, c, p}, out);
   }
 
-  // The same for EE pair (e1, e2), e1 < e2, edges ab and cd.
+  // The same for EE pair (e1, e2), e1 < e2, edges ab and cd. `off_plane`: the triangle
+  // filter proved that one edge never meets the plane of the other's triangle.
   void edge_edge(Index e1, Index e2, Corner a, Corner b, Corner c, Corner d, const Box& box1,
-                 const Box& box2, ThreadSink& out) const {
+                 const Box& box2, bool off_plane, ThreadOutput& out) const {
     ++out.counts.ee_generated;
     if (m_options.primitive_boxes && !overlap(box1, box2)) return;
     ++out.counts.ee_after_boxes;
-    if (m_filters.coplanarity || m_filters.projection) {
-      const PairVerdict verdict = edge_edge_verdict(
-          ConstVec3(a.t0), ConstVec3(b.t0), ConstVec3(c.t0), ConstVec3(d.t0), ConstVec3(a.t1),
-          ConstVec3(b.t1), ConstVec3(c.t1), ConstVec3(d.t1), m_filters);
-      if (verdict == PairVerdict::never_coplanar) return;
-      ++out.counts.ee_after_filter;
-      if (verdict == PairVerdict::apart_in_projection) return;
-    } else {
-      ++out.counts.ee_after_filter;
-    }
-    ++out.counts.ee_after_projection;
-    out.edge_edge.push_back({e1, e2});
+    if (off_plane) return;
+    submit(PairKind::edge_edge, e1, e2, {a, b, c, d}, out);
   }
 
   // A VF pair by ids (the isolated set).
-  void vertex_face(Index v, Index f, ThreadSink& out) const {
+  void vertex_face(Index v, Index f, ThreadOutput& out) const {
     const FaceArray& faces = m_mesh.faces();
     const Corner p = at(v), a = at(faces(f, 0)), b = at(faces(f, 1)), c = at(faces(f, 2));
-    vertex_face(v, f, p, a, b, c, swept(p), joined(joined(swept(a), swept(b)), swept(c)), out);
+    vertex_face(v, f, p, a, b, c, swept(p), joined(joined(swept(a), swept(b)), swept(c)), false,
+                out);
   }
 
   // An EE pair by ids, e1 < e2 (the isolated set).
-  void edge_edge(Index e1, Index e2, ThreadSink& out) const {
+  void edge_edge(Index e1, Index e2, ThreadOutput& out) const {
     const EdgeArray& edges = m_mesh.edges();
     const Corner a = at(edges(e1, 0)), b = at(edges(e1, 1));
     const Corner c = at(edges(e2, 0)), d = at(edges(e2, 1));
-    edge_edge(e1, e2, a, b, c, d, joined(swept(a), swept(b)), joined(swept(c), swept(d)), out);
+    edge_edge(e1, e2, a, b, c, d, joined(swept(a), swept(b)), joined(swept(c), swept(d)), false,
+              out);
   }
 
   // Stage 1 and the rest: the feature pairs CTP (f, g) owes. The six corners are read
-  // once; their boxes are shared by all 15 candidate pairs.
-  void expand(Index f, Index g, ThreadSink& out) const {
+  // once; their boxes are shared by all 15 candidate pairs. `sides`: the triangle
+  // filter's corner sides (none known when it is off).
+  void expand(Index f, Index g, TrianglePairSides sides, ThreadOutput& out) const {
     const FaceArray& faces = m_mesh.faces();
     const Index face[2][3] = {{faces(f, 0), faces(f, 1), faces(f, 2)},
                               {faces(g, 0), faces(g, 1), faces(g, 2)}};
@@ -155,8 +165,10 @@ class Stages {
         const Index v = face[s][k];
         if (!disjoint && contains(face[o], v)) continue;
         if (!owes_vertex_face(ids[s], k, v, ids[o], face[o], disjoint)) continue;
+        const int bit =
+            s == 0 ? TrianglePairSides::first_corner(k) : TrianglePairSides::second_corner(k);
         vertex_face(v, ids[o], corners[s][k], corners[o][0], corners[o][1], corners[o][2],
-                    corner_boxes[s][k], face_boxes[o], out);
+                    corner_boxes[s][k], face_boxes[o], sides.corner_off_plane(bit), out);
       }
     }
 
@@ -168,6 +180,10 @@ class Stages {
         if (!owes_edge_edge(f, i, ef, face[0], g, j, eg, face[1], disjoint)) continue;
         // Edge i of a face joins its corners i and i+1.
         const int i1 = (i + 1) % 3, j1 = (j + 1) % 3;
+        const bool off_plane = sides.segment_off_plane(TrianglePairSides::first_corner(i),
+                                                       TrianglePairSides::first_corner(i1)) ||
+                               sides.segment_off_plane(TrianglePairSides::second_corner(j),
+                                                       TrianglePairSides::second_corner(j1));
         Box box_f = joined(corner_boxes[0][i], corner_boxes[0][i1]);
         Box box_g = joined(corner_boxes[1][j], corner_boxes[1][j1]);
         // Orient each edge as stored (a < b) and order the pair by edge id, so that a pair
@@ -176,15 +192,30 @@ class Stages {
         if (face[0][i] > face[0][i1]) std::swap(a, b);
         if (face[1][j] > face[1][j1]) std::swap(c, d);
         if (ef < eg) {
-          edge_edge(ef, eg, a, b, c, d, box_f, box_g, out);
+          edge_edge(ef, eg, a, b, c, d, box_f, box_g, off_plane, out);
         } else {
-          edge_edge(eg, ef, c, d, a, b, box_g, box_f, out);
+          edge_edge(eg, ef, c, d, a, b, box_g, box_f, off_plane, out);
         }
       }
     }
   }
 
  private:
+  // The pairs that passed the boxes and the triangle filter wait for the filters in a
+  // batch (the points a, b, c, d of batch_pair_filters.hpp).
+  void submit(PairKind kind, Index first, Index second, const std::array<Corner, 4>& points,
+              ThreadOutput& out) const {
+    if (!m_filters.coplanarity && !m_filters.projection) {
+      ++(kind == PairKind::vertex_face ? out.counts.vf_after_filter : out.counts.ee_after_filter);
+      keep(kind, first, second, out);
+      return;
+    }
+    PairBatch& batch = kind == PairKind::vertex_face ? out.vertex_face_batch : out.edge_edge_batch;
+    batch.add(first, second, {points[0].t0, points[1].t0, points[2].t0, points[3].t0},
+              {points[0].t1, points[1].t1, points[2].t1, points[3].t1});
+    if (batch.full()) flush(kind, m_filters, out);
+  }
+
   // Whether CTP (from, to) is the representative of VF pair (corner k of `from`, `to`).
   bool owes_vertex_face(Index from, int k, Index v, Index to, const Index* to_face,
                         bool disjoint) const {
@@ -231,6 +262,7 @@ class Stages {
 }  // namespace
 
 LowLevelCounts& LowLevelCounts::operator+=(const LowLevelCounts& other) {
+  triangle_pairs_separated += other.triangle_pairs_separated;
   vf_generated += other.vf_generated;
   ee_generated += other.ee_generated;
   vf_after_boxes += other.vf_after_boxes;
@@ -266,10 +298,24 @@ void PrimitivePairGenerator::add_triangle_pairs(std::span<const TrianglePair> ct
   const Stages stages(*m_mesh, m_assignment, x0, x1, options);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ctps.size(), 512), [&](const auto& r) {
     ThreadOutput& local = m_outputs.local();
-    ThreadSink out{local.vertex_face, local.edge_edge, local.counts};
-    for (std::size_t i = r.begin(); i < r.end(); ++i)
-      stages.expand(ctps[i].first, ctps[i].second, out);
+    constexpr std::size_t kChunk = 64;
+    std::array<TrianglePairSides, kChunk> sides{};
+    for (std::size_t first = r.begin(); first < r.end(); first += kChunk) {
+      const std::size_t count = std::min(kChunk, r.end() - first);
+      const std::span<const TrianglePair> chunk = ctps.subspan(first, count);
+      if (options.triangle_filter) {
+        triangle_pair_sides(m_mesh->faces(), x0, x1, chunk, std::span(sides.data(), count));
+      }
+      for (std::size_t i = 0; i < count; ++i) {
+        if (sides[i].separated()) {
+          ++local.counts.triangle_pairs_separated;
+          continue;
+        }
+        stages.expand(chunk[i].first, chunk[i].second, sides[i], local);
+      }
+    }
   });
+  flush_batches(options);
 }
 
 void PrimitivePairGenerator::add_isolated(const IsolatedSet& isolated, const Positions& x0,
@@ -278,19 +324,26 @@ void PrimitivePairGenerator::add_isolated(const IsolatedSet& isolated, const Pos
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, isolated.vertex_face.size(), 1024), [&](const auto& r) {
         ThreadOutput& local = m_outputs.local();
-        ThreadSink out{local.vertex_face, local.edge_edge, local.counts};
         for (std::size_t i = r.begin(); i < r.end(); ++i) {
-          stages.vertex_face(isolated.vertex_face[i].vertex, isolated.vertex_face[i].face, out);
+          stages.vertex_face(isolated.vertex_face[i].vertex, isolated.vertex_face[i].face, local);
         }
       });
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, isolated.edge_edge.size(), 1024), [&](const auto& r) {
         ThreadOutput& local = m_outputs.local();
-        ThreadSink out{local.vertex_face, local.edge_edge, local.counts};
         for (std::size_t i = r.begin(); i < r.end(); ++i) {
-          stages.edge_edge(isolated.edge_edge[i].edge_a, isolated.edge_edge[i].edge_b, out);
+          stages.edge_edge(isolated.edge_edge[i].edge_a, isolated.edge_edge[i].edge_b, local);
         }
       });
+  flush_batches(options);
+}
+
+void PrimitivePairGenerator::flush_batches(const LowLevelOptions& options) {
+  const PairFilters filters{options.coplanarity_filter, options.projection_filter};
+  for (ThreadOutput& out : m_outputs) {
+    flush(PairKind::vertex_face, filters, out);
+    flush(PairKind::edge_edge, filters, out);
+  }
 }
 
 std::vector<std::span<const VertexFacePair>> PrimitivePairGenerator::vertex_face_blocks() const {

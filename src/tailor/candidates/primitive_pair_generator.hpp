@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "tailor/candidates/batch_pair_filters.hpp"
 #include "tailor/candidates/feature_assignment.hpp"
 #include "tailor/candidates/isolated_set.hpp"
 #include "tailor/candidates/primitive_pair.hpp"
@@ -18,6 +19,8 @@ namespace tailor {
 
 /// Which low-level stages run.
 struct LowLevelOptions {
+  bool triangle_filter =
+      true;  ///< drop CTPs (and pairs) by their planes (triangle_plane_sides.hpp)
   bool feature_assignment = true;  ///< test each feature pair from one triangle pair only
   bool primitive_boxes = true;     ///< drop pairs whose swept boxes do not overlap
   bool coplanarity_filter = true;  ///< drop pairs that can never become coplanar
@@ -28,6 +31,7 @@ struct LowLevelOptions {
 
 /// VF and EE pair counts after each low-level stage.
 struct LowLevelCounts {
+  std::int64_t triangle_pairs_separated = 0;  ///< CTPs the triangle filter dropped whole
   std::int64_t vf_generated = 0, ee_generated = 0;
   std::int64_t vf_after_boxes = 0, ee_after_boxes = 0;
   std::int64_t vf_after_filter = 0, ee_after_filter = 0;
@@ -64,12 +68,19 @@ class PrimitivePairGenerator {
 
   const FeatureAssignment& assignment() const { return m_assignment; }
 
- private:
+  /// What one thread generates: the surviving pairs, its counts, and the pairs waiting
+  /// for the filters (batch_pair_filters.hpp).
   struct ThreadOutput {
     std::vector<VertexFacePair> vertex_face;
     std::vector<EdgeEdgePair> edge_edge;
     LowLevelCounts counts;
+    PairBatch vertex_face_batch, edge_edge_batch;
   };
+
+ private:
+  // Runs the filters on every thread's waiting pairs.
+  void flush_batches(const LowLevelOptions& options);
+
   const TriangleMesh* m_mesh = nullptr;
   FeatureAssignment m_assignment;
   tbb::enumerable_thread_specific<ThreadOutput> m_outputs;

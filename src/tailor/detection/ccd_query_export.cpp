@@ -5,15 +5,14 @@
 
 #include "tailor/candidates/isolated_set.hpp"
 #include "tailor/candidates/primitive_pair_generator.hpp"
+#include "tailor/detection/stage_options.hpp"
 
 namespace tailor {
 
 StepCcdQueries step_ccd_queries(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
                                 const DetectionConfig& config,
                                 const std::vector<TrianglePair>& ctps) {
-  const LowLevelOptions options{config.feature_assignment, config.primitive_boxes,
-                                config.coplanarity_filter, config.projection_filter,
-                                config.adjacency_culling};
+  const LowLevelOptions options = low_level_options(config);
   PrimitivePairGenerator generator(mesh);
   generator.begin_step();
   if (config.adjacency_culling) generator.add_isolated(IsolatedSet::build(mesh), x0, x1, options);

@@ -52,6 +52,9 @@ inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
   SWITCH(adjacency_culling, true, "adjacency", work_only,                                         \
          "adjacency culling: no triangle pairs sharing a vertex (their pairs come from the "      \
          "isolated set)")                                                                         \
+  SWITCH(triangle_filter, true, "triangle-filter", work_only,                                     \
+         "triangle filter: drop candidate triangle pairs (and their vertex-face and edge-edge "  \
+         "pairs) that a moving triangle plane separates (candidates/triangle_plane_sides.hpp)")   \
   SWITCH(feature_assignment, true, "assignment", work_only,                                       \
          "feature assignment: each vertex and edge tested through one representative triangle "   \
          "(Curtis et al. 2008)")                                                                  \

@@ -39,6 +39,8 @@ namespace tailor {
   COUNT(radial_undetermined, "radial view",                                                       \
         "triangles of the classified clusters facing neither way over the whole step")            \
   COUNT(candidate_triangle_pairs, "traversal", "candidate triangle pairs (CTPs) emitted")        \
+  COUNT(triangle_pairs_separated, "low level",                                                    \
+        "CTPs the triangle filter dropped whole (one face on one side of the other's plane)")     \
   COUNT(isolated_vf_pairs, "isolated set", "vertex-face pairs of the isolated set")              \
   COUNT(isolated_ee_pairs, "isolated set", "edge-edge pairs of the isolated set")                \
   COUNT(vf_generated, "low level", "vertex-face pairs generated from the CTPs + isolated set")   \

@@ -13,6 +13,7 @@
 #include "tailor/culling/radial_view_culling.hpp"
 #include "tailor/detection/exact_pair_tests.hpp"
 #include "tailor/detection/stage_counts.hpp"
+#include "tailor/detection/stage_options.hpp"
 #include "tailor/geometry/error.hpp"
 #include "tailor/geometry/finite_positions.hpp"
 #include "tailor/geometry/stopwatch.hpp"
@@ -71,10 +72,6 @@ struct SelfCollisionDetector::Impl {
     });
   }
 
-  TraversalOptions traversal_options() const {
-    return {config.normal_cones, config.contour_test, config.adjacency_culling};
-  }
-
   // The refit and the traversal. After a step whose root was certified the masks come
   // first (temporal coherence: a cloth that stays free of folds keeps its root certified),
   // and when they and the contour certify the root again no box is read this step, so
@@ -88,7 +85,8 @@ struct SelfCollisionDetector::Impl {
       stats.refit_ms = milliseconds_since(stage);
       stage = SteadyClock::now();
       traversal.clear();
-      const bool certified = traversal.certify_root(bvh, contours, {x0, x1}, traversal_options());
+      const bool certified =
+          traversal.certify_root(bvh, contours, {x0, x1}, traversal_options(config));
       stats.traversal_ms = milliseconds_since(stage);
       if (certified) return;
       stage = SteadyClock::now();
@@ -100,7 +98,7 @@ struct SelfCollisionDetector::Impl {
     stats.refit_ms += milliseconds_since(stage);
     stage = SteadyClock::now();
     traversal.clear();
-    root_certified = traversal.self(bvh, contours, {x0, x1}, traversal_options());
+    root_certified = traversal.self(bvh, contours, {x0, x1}, traversal_options(config));
     stats.traversal_ms += milliseconds_since(stage);
   }
 
@@ -134,9 +132,7 @@ struct SelfCollisionDetector::Impl {
 
   // Low-level culling and exact CCD, in rounds of at most kRoundTrianglePairs CTPs.
   void low_level_and_ccd(const Positions& x0, const Positions& x1, DetectionStats& stats) {
-    const LowLevelOptions options{config.feature_assignment, config.primitive_boxes,
-                                  config.coplanarity_filter, config.projection_filter,
-                                  config.adjacency_culling};
+    const LowLevelOptions options = low_level_options(config);
     generator.begin_step();
     tester.begin_step();
     auto start = SteadyClock::now();

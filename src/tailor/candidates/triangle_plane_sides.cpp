@@ -1,0 +1,93 @@
+#include "tailor/candidates/triangle_plane_sides.hpp"
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+
+#include "tailor/bvh/batch_gather.hpp"
+#include "tailor/bvh/lane_vectors.hpp"
+
+namespace tailor {
+namespace {
+
+// The two faces of up to kCapacity pairs, one batch per face of the pair.
+struct PairBatches {
+  MovingTriangleBatch first, second;
+};
+
+// One build of the lanes per instruction set.
+namespace sse2 {
+constexpr int W = 2;
+#include "tailor/candidates/triangle_plane_sides_lanes.inc"
+}  // namespace sse2
+#pragma GCC push_options
+#pragma GCC target("avx2")
+namespace avx2 {
+constexpr int W = 4;
+#include "tailor/candidates/triangle_plane_sides_lanes.inc"
+}  // namespace avx2
+#pragma GCC pop_options
+#pragma GCC push_options
+#pragma GCC target("avx512f,avx512dq,avx2")
+namespace avx512 {
+constexpr int W = 8;
+#include "tailor/candidates/triangle_plane_sides_lanes.inc"
+}  // namespace avx512
+#pragma GCC pop_options
+
+using BatchKernel = void (*)(const PairBatches&, TrianglePairSides*);
+
+// Lanes past the last pair repeat lane 0, up to a multiple of eight (the widest vector).
+void pad(MovingTriangleBatch& batch) {
+  const int padded = (batch.count + 7) & ~7;
+  for (int row = 0; row < 18; ++row) {
+    for (int i = batch.count; i < padded; ++i) batch.coordinate[row][i] = batch.coordinate[row][0];
+  }
+}
+
+void pair_sides(BatchKernel kernel, const FaceArray& faces, const Positions& x0,
+                const Positions& x1, std::span<const TrianglePair> pairs,
+                std::span<TrianglePairSides> sides) {
+  if (sides.size() != pairs.size()) {
+    throw std::invalid_argument("triangle_pair_sides: sides and pairs differ in size");
+  }
+  constexpr std::size_t kCapacity = MovingTriangleBatch::kCapacity;
+  PairBatches batches;
+  std::array<std::array<Index, 3>, kCapacity> first, second;
+  std::array<TrianglePairSides, kCapacity> lane_sides;
+  for (std::size_t begin = 0; begin < pairs.size(); begin += kCapacity) {
+    const std::size_t count = std::min(kCapacity, pairs.size() - begin);
+    for (std::size_t i = 0; i < count; ++i) {
+      const TrianglePair& pair = pairs[begin + i];
+      first[i] = {faces(pair.first, 0), faces(pair.first, 1), faces(pair.first, 2)};
+      second[i] = {faces(pair.second, 0), faces(pair.second, 1), faces(pair.second, 2)};
+    }
+    gather_batch(x0.data(), x1.data(), std::span(first.data(), count), batches.first);
+    gather_batch(x0.data(), x1.data(), std::span(second.data(), count), batches.second);
+    pad(batches.first);
+    pad(batches.second);
+    kernel(batches, lane_sides.data());
+    std::copy_n(lane_sides.begin(), count, sides.begin() + static_cast<std::ptrdiff_t>(begin));
+  }
+}
+
+}  // namespace
+
+namespace detail {
+
+void triangle_pair_sides_two_lanes(const FaceArray& faces, const Positions& x0, const Positions& x1,
+                                   std::span<const TrianglePair> pairs,
+                                   std::span<TrianglePairSides> sides) {
+  pair_sides(sse2::batch_sides, faces, x0, x1, pairs, sides);
+}
+
+}  // namespace detail
+
+void triangle_pair_sides(const FaceArray& faces, const Positions& x0, const Positions& x1,
+                         std::span<const TrianglePair> pairs, std::span<TrianglePairSides> sides) {
+  static const BatchKernel kernel =
+      lanes::widest<BatchKernel>(avx512::batch_sides, avx2::batch_sides, sse2::batch_sides);
+  pair_sides(kernel, faces, x0, x1, pairs, sides);
+}
+
+}  // namespace tailor
