@@ -1,18 +1,21 @@
 // Per-stage cost of the self-collision detector on a procedurally crumpling cloth, from
-// 10K to 1M triangles, and on the contact-heavy folded cloth (~1 collision per triangle),
-// 1 and 2 threads; the refit of boxes and cones alone, for comparison.
+// 10K to 1M triangles, on the contact-heavy folded cloth (~1 collision per triangle), on
+// the dense pleated cloth (the contact density of real steps) and on cloth-ball's real
+// step, 1 and 2 threads; the refit of boxes and cones alone, for comparison.
 
 #include <benchmark/benchmark.h>
 #include <tbb/task_arena.h>
 
 #include <map>
 #include <memory>
+#include <string>
 
 #include "tailor/bvh/aabb.hpp"
 #include "tailor/bvh/mesh_bvh.hpp"
 #include "tailor/culling/contour_test.hpp"
 #include "tailor/culling/node_contours.hpp"
 #include "tailor/detection/self_collision_detector.hpp"
+#include "tailor/io/mesh_io.hpp"
 #include "tailor/mesh/procedural_meshes.hpp"
 #include "tailor/mesh/procedural_steps.hpp"
 
@@ -76,13 +79,16 @@ void BM_DetectStep(benchmark::State& state) {
               static_cast<int>(state.range(1)));
 }
 
-// The folded cloth on a sphere of about `triangles` triangles (cached).
-const Scene& folded_scene(std::int64_t triangles) {
-  static std::map<std::int64_t, Scene> cache;
-  auto [it, inserted] = cache.try_emplace(triangles);
+// A procedural step of about `triangles` triangles (cached): the folded cloth on a sphere
+// or the pleated cloth (the contact density of real dense steps such as cloth-ball).
+enum class Procedural { folded, pleated };
+const Scene& procedural_scene(Procedural kind, std::int64_t triangles) {
+  static std::map<std::pair<Procedural, std::int64_t>, Scene> cache;
+  auto [it, inserted] = cache.try_emplace({kind, triangles});
   Scene& s = it->second;
   if (inserted) {
-    ProceduralStep step = make_folded_cloth_on_sphere(triangles);
+    ProceduralStep step = kind == Procedural::folded ? make_folded_cloth_on_sphere(triangles)
+                                                     : make_pleated_cloth(triangles);
     s.mesh = std::make_unique<TriangleMesh>(static_cast<Index>(step.x0.rows()), step.faces);
     s.x0 = std::move(step.x0);
     s.x1 = std::move(step.x1);
@@ -92,7 +98,35 @@ const Scene& folded_scene(std::int64_t triangles) {
 
 // The contact-heavy step; args: triangles, threads.
 void BM_DetectFoldedStep(benchmark::State& state) {
-  detect_step(state, folded_scene(state.range(0)), static_cast<int>(state.range(1)));
+  detect_step(state, procedural_scene(Procedural::folded, state.range(0)),
+              static_cast<int>(state.range(1)));
+}
+
+// The dense-contact step (some 35 candidate triangle pairs and 2 collisions per
+// triangle); args: triangles, threads.
+void BM_DetectPleatedStep(benchmark::State& state) {
+  detect_step(state, procedural_scene(Procedural::pleated, state.range(0)),
+              static_cast<int>(state.range(1)));
+}
+
+// cloth-ball's step 92 -> 93 (../shared/data/cloth-ball: 92,230 triangles, 113,854
+// colliding pairs), the detector built once; arg: threads.
+void BM_DetectClothBallStep(benchmark::State& state) {
+  static Scene s;
+  if (!s.mesh) {
+    const std::string dir = std::string(TAILOR_DATA_DIR) + "/cloth-ball/frames/";
+    try {
+      MeshData m0 = read_mesh(dir + "cloth_ball92.ply");
+      MeshData m1 = read_mesh(dir + "cloth_ball93.ply");
+      s.mesh = std::make_unique<TriangleMesh>(static_cast<Index>(m0.vertices.rows()), m0.faces);
+      s.x0 = std::move(m0.vertices);
+      s.x1 = std::move(m1.vertices);
+    } catch (const std::exception& e) {
+      state.SkipWithError(e.what());  // the reference data is not beside the repository
+      return;
+    }
+  }
+  detect_step(state, s, static_cast<int>(state.range(0)));
 }
 
 // Refitting swept boxes and direction masks, boxes only, or masks only (what a step whose
@@ -197,6 +231,17 @@ BENCHMARK(BM_DetectStep)->Apply(sizes);
 BENCHMARK(BM_DetectFoldedStep)
     ->ArgsProduct({{10'000, 100'000}, {1, 2}})
     ->ArgNames({"triangles", "threads"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_DetectPleatedStep)
+    ->ArgsProduct({{100'000, 1'000'000}, {1, 2}})
+    ->ArgNames({"triangles", "threads"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_DetectClothBallStep)
+    ->Arg(1)
+    ->Arg(2)
+    ->ArgName("threads")
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(BM_RefitOnly)->Apply(sizes);

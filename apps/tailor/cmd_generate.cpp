@@ -20,15 +20,18 @@ struct GenerateOptions {
   std::string scene = "folded-cloth";
   std::int64_t triangles = 100'000;
   std::uint64_t seed = 1;
+  int layers = 6;
   std::string out;
 };
 
 int run_generate(const GenerateOptions& options) {
   const std::filesystem::path dir(options.out);
   prepare_output_folder(dir);  // before the work; a file there is an InputError (exit 2)
-  const ProceduralStep step = options.scene == "crumpling-cloth"
-                                  ? make_crumpling_cloth_step(options.triangles)
-                                  : make_folded_cloth_on_sphere(options.triangles, options.seed);
+  const ProceduralStep step =
+      options.scene == "crumpling-cloth" ? make_crumpling_cloth_step(options.triangles)
+      : options.scene == "pleated-cloth"
+          ? make_pleated_cloth(options.triangles, options.layers, options.seed)
+          : make_folded_cloth_on_sphere(options.triangles, options.seed);
   write_mesh(dir / "t0.ply", step.x0, step.faces);
   write_mesh(dir / "t1.ply", step.x1, step.faces);
   fmt::print("{}: {} vertices, {} triangles -> {} and {}\n", options.scene, step.x0.rows(),
@@ -44,12 +47,16 @@ const CommandRegistration generate_registration{
       command
           ->add_option(
               "scene", options->scene,
-              "Scene: folded-cloth (cloth folded onto itself on a sphere: contact-heavy) or "
-              "crumpling-cloth (a crumpling square cloth: no contact)")
-          ->check(CLI::IsMember({"folded-cloth", "crumpling-cloth"}));
+              "Scene: folded-cloth (cloth folded onto itself on a sphere: contact-heavy), "
+              "pleated-cloth (a cloth pleated into layers heaving through one another: the "
+              "contact density of real dense steps such as cloth-ball) or crumpling-cloth (a "
+              "crumpling square cloth: no contact)")
+          ->check(CLI::IsMember({"folded-cloth", "pleated-cloth", "crumpling-cloth"}));
       command->add_option("--triangles", options->triangles, "Approximate triangle count")
           ->check(CLI::Range(std::int64_t{200}, std::int64_t{1} << 26));
       command->add_option("--seed", options->seed, "Random seed");
+      command->add_option("--layers", options->layers, "Layers of pleated-cloth")
+          ->check(CLI::Range(2, 64));
       command->add_option("--out", options->out, "Output folder")->required();
       return [options] { return run_generate(*options); };
     }};

@@ -16,6 +16,9 @@
 #include "tailor/bvh/float_box.hpp"
 #include "tailor/bvh/mesh_bvh.hpp"
 #include "tailor/mesh/procedural_steps.hpp"
+#include "tailor/mesh/triangle_mesh.hpp"
+
+#include <tbb/task_arena.h>
 
 namespace tailor {
 namespace {
@@ -295,6 +298,34 @@ TEST(MeshBvh, RefitBoxesAreTheTightestFloatBoxes) {
       }
     }
   }
+}
+
+}  // namespace
+}  // namespace tailor
+
+namespace tailor {
+namespace {
+
+// Subtrees are split in parallel: the tree must be the one a single thread builds, on a
+// surface of several components (two sheets of a folded cloth, plus a loose strip).
+TEST(BvhLayout, SurfaceLayoutDoesNotDependOnThreads) {
+  const ProceduralStep step = make_folded_cloth_on_sphere(sanitized() ? 6000 : 40000, 3);
+  const TriangleMesh mesh(step.x0.rows(), step.faces);
+  std::vector<Index> faces;
+  std::vector<Vec3> centers;
+  for (Index f = 0; f < mesh.num_faces(); f += (f % 97 == 5) ? 2 : 1) {  // holes: components
+    faces.push_back(f);
+    centers.push_back((step.x0.row(step.faces(f, 0)) + step.x0.row(step.faces(f, 1)) +
+                       step.x0.row(step.faces(f, 2)))
+                          .transpose() /
+                      3.0);
+  }
+  const BvhLayout parallel = build_surface_layout(mesh, faces, centers);
+  BvhLayout sequential;
+  tbb::task_arena(1).execute([&] { sequential = build_surface_layout(mesh, faces, centers); });
+  ASSERT_EQ(parallel.num_nodes(), 2 * static_cast<Index>(faces.size()) - 1);
+  EXPECT_EQ(parallel.right, sequential.right);
+  EXPECT_EQ(parallel.count, sequential.count);
 }
 
 }  // namespace

@@ -145,6 +145,24 @@ TEST(DetectorVsBruteForce, FoldedClothEveryPresetAndStage) {
   }
 }
 
+// The dense step (a cloth pleated into layers heaving through one another: the contact
+// density of real steps): every preset, 1 and 2 threads, against brute force.
+TEST(DetectorVsBruteForce, PleatedClothEveryPreset) {
+  const ProceduralStep step = make_pleated_cloth(sanitized() ? 400 : 3000);
+  const TriangleMesh mesh(static_cast<Index>(step.x0.rows()), step.faces);
+  const CollisionSet truth = brute_force_self_collisions(mesh, step.x0, step.x1);
+  EXPECT_GT(truth.size(), static_cast<std::size_t>(mesh.num_faces()));  // dense: > 1 a face
+  for (const std::string& method : DetectionConfig::preset_names()) {
+    for (int threads : {1, 2}) {
+      DetectionConfig config = DetectionConfig::preset(method);
+      config.threads = threads;
+      SelfCollisionDetector detector(mesh, step.x0, config);
+      expect_same(truth, detector.detect(step.x0, step.x1).collisions,
+                  "pleated " + method + " " + describe(config));
+    }
+  }
+}
+
 // A crumpling height field: no collision, and every normal has n·z > 0 over the step, so
 // the direction masks certify the root (the contour test passes on the square's boundary)
 // and the paper preset emits no candidate pair at all; every preset agrees with brute force.

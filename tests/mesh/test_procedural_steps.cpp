@@ -1,6 +1,6 @@
 /// @file
-/// The contact-heavy procedural step: size, topology, determinism, an intersection-free
-/// start and a real crossing of the two layers during the step.
+/// The contact-heavy procedural steps (folded and pleated cloth): size, topology, determinism, an
+/// intersection-free start and a real crossing of the two layers during the step.
 
 #include <gtest/gtest.h>
 
@@ -48,6 +48,28 @@ TEST(FoldedClothOnSphere, ThePlateauIsExactlyPlanarAtBothEnds) {
     if (step.x0(v, 1) == 0.96) on_plateau += step.x1(v, 1) == 0.96 ? 1 : 0;
   }
   EXPECT_GT(on_plateau, 50);
+}
+
+TEST(PleatedCloth, HasAboutTheRequestedSizeAndOneManifoldSheet) {
+  for (const std::int64_t target : {5'000, 20'000}) {
+    const ProceduralStep step = make_pleated_cloth(target);
+    const TriangleMesh mesh(static_cast<Index>(step.x0.rows()), step.faces);
+    EXPECT_NEAR(static_cast<double>(mesh.num_faces()), static_cast<double>(target), 0.1 * target);
+    EXPECT_TRUE(mesh.validation().is_manifold());
+    EXPECT_EQ(mesh.num_components(), 1);
+    EXPECT_EQ(mesh.num_boundary_loops(), 1);
+  }
+  EXPECT_THROW(make_pleated_cloth(199), std::invalid_argument);
+  EXPECT_THROW(make_pleated_cloth(1'000, 1), std::invalid_argument);
+  EXPECT_EQ(make_pleated_cloth(3'000, 6, 4).x1, make_pleated_cloth(3'000, 6, 4).x1);
+  EXPECT_NE(make_pleated_cloth(3'000, 6, 4).x0, make_pleated_cloth(3'000, 6, 5).x0);
+}
+
+TEST(PleatedCloth, StartsIntersectionFreeAndTheLayersCrossDuringTheStep) {
+  const ProceduralStep step = make_pleated_cloth(5'000);
+  const TriangleMesh mesh(static_cast<Index>(step.x0.rows()), step.faces);
+  EXPECT_TRUE(check_intersections(mesh, step.x0).intersection_free());
+  EXPECT_GT(check_intersections(mesh, step.x1).self_intersections, mesh.num_faces() / 10);
 }
 
 }  // namespace

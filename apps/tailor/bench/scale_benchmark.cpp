@@ -91,6 +91,7 @@ ScaleScene sleeve_scene(Index triangles) {
 ScaleScene make_scene(const std::string& name, Index triangles) {
   if (name == "cloth") return from_step(make_crumpling_cloth_step(triangles));
   if (name == "folded") return from_step(make_folded_cloth_on_sphere(triangles));
+  if (name == "pleated") return from_step(make_pleated_cloth(triangles));
   return sleeve_scene(triangles);
 }
 
@@ -221,7 +222,7 @@ double scale_bytes_per_triangle(const std::string& scene, Index target_triangles
 }
 
 std::vector<std::string> scale_scene_names() {
-  return {"cloth", "folded", "sleeve"};
+  return {"cloth", "folded", "pleated", "sleeve"};
 }
 
 std::vector<ScaleRow> run_scale_benchmark(const ScaleOptions& options) {
@@ -229,7 +230,7 @@ std::vector<ScaleRow> run_scale_benchmark(const ScaleOptions& options) {
   for (const std::string& name : options.scenes) {
     if (std::find(known.begin(), known.end(), name) == known.end()) {
       throw InputError(
-          fmt::format("unknown scale scene '{}' (expected cloth, folded, sleeve)", name));
+          fmt::format("unknown scale scene '{}' (expected cloth, folded, pleated, sleeve)", name));
     }
   }
   std::vector<Index> sizes;

@@ -16,7 +16,7 @@ namespace tailor {
 
 /// One measured configuration: a scene at one size and thread count.
 struct ScaleRow {
-  std::string scene;  ///< "cloth", "folded" or "sleeve" (see ScaleOptions::scenes)
+  std::string scene;  ///< "cloth", "folded", "pleated" or "sleeve" (see ScaleOptions::scenes)
   int threads = 1;
   Index triangles = 0;
   double floor_ms = 0;  ///< read x0 and x1 and compute every face's swept box (same threads)
@@ -46,9 +46,11 @@ struct ScaleRow {
 /// What to run.
 struct ScaleOptions {
   /// Scenes: "cloth" (a square cloth crumpling between t=0.5 and 0.51: no contact),
-  /// "folded" (make_folded_cloth_on_sphere: ~1 colliding pair per triangle) and "sleeve"
+  /// "folded" (make_folded_cloth_on_sphere: ~1 colliding pair per triangle), "pleated"
+  /// (make_pleated_cloth: ~35 candidate triangle pairs and ~2 collisions per triangle, the
+  /// density of real contact) and "sleeve"
   /// (a sleeve-proportioned tube bending 1° at its middle, radial-view observers).
-  std::vector<std::string> scenes = {"cloth", "folded", "sleeve"};
+  std::vector<std::string> scenes = {"cloth", "folded", "pleated", "sleeve"};
   Index min_triangles = 10'000;
   Index max_triangles = 1'000'000;
   std::vector<int> threads = {1, 2};

@@ -1,8 +1,12 @@
 #include "tailor/bvh/bvh_layout.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <limits>
 #include <numeric>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_invoke.h>
 
 namespace tailor {
 
@@ -75,6 +79,16 @@ struct FaceGraph {
   }
 };
 
+// Per-thread work space of a split: the breadth-first queue and where each component
+// starts in it.
+struct SplitScratch {
+  std::vector<Index> queue, component_starts;
+};
+
+// Splits face ranges. Ranges being split at the same time are disjoint, so they touch
+// disjoint entries of the shared stamp and mark arrays: subtrees split in parallel. A
+// split depends only on its range's faces and their order (the task id only has to be
+// unique), so the tree does not depend on scheduling.
 class SurfaceSplitter {
  public:
   SurfaceSplitter(const FaceGraph& graph, std::span<const Vec3> centers)
@@ -83,42 +97,46 @@ class SurfaceSplitter {
         m_stamp(centers.size(), -1),
         m_mark(centers.size(), -1) {}
 
-  // Reorders `range` so that its first `returned` faces form the left child.
-  Index split(std::span<Index> range, Index task) {
-    for (Index f : range) m_stamp[f] = task;
+  // Reorders `range` so that its first `returned` faces form the left child. `task` is
+  // unique among all splits (the node id).
+  Index split(std::span<Index> range, Index task, SplitScratch& scratch) const {
+    for (Index f : range) std::atomic_ref<Index>(m_stamp[f]).store(task, std::memory_order_relaxed);
     // Components of the range (breadth-first, in range order).
-    m_queue.clear();
-    m_component_starts.clear();
+    scratch.queue.clear();
+    scratch.component_starts.clear();
     for (Index f : range) {
       if (m_mark[f] == task) continue;
-      m_component_starts.push_back(static_cast<Index>(m_queue.size()));
-      visit_from(f, task);
+      scratch.component_starts.push_back(static_cast<Index>(scratch.queue.size()));
+      visit_from(f, task, scratch.queue);
     }
-    m_component_starts.push_back(static_cast<Index>(m_queue.size()));
+    scratch.component_starts.push_back(static_cast<Index>(scratch.queue.size()));
     const Index half = static_cast<Index>(range.size()) / 2;
-    if (m_component_starts.size() > 2) return split_components(range, half);
+    if (scratch.component_starts.size() > 2) return split_components(range, half, scratch);
     // One patch: breadth-first from a peripheral face; the first half goes left.
-    const Index far = m_queue.back();
-    m_queue.clear();
-    visit_from(far, ~task);  // a fresh mark value for this pass
-    std::copy(m_queue.begin(), m_queue.end(), range.begin());
+    const Index far = scratch.queue.back();
+    scratch.queue.clear();
+    visit_from(far, ~task, scratch.queue);  // a fresh mark value for this pass
+    std::copy(scratch.queue.begin(), scratch.queue.end(), range.begin());
     return half;
   }
 
  private:
-  // Appends to m_queue every face of the current range reachable from `start`, marking
+  // Appends to `queue` every face of the current range reachable from `start`, marking
   // them with `mark`.
-  void visit_from(Index start, Index mark) {
-    std::size_t head = m_queue.size();
-    m_queue.push_back(start);
+  void visit_from(Index start, Index mark, std::vector<Index>& queue) const {
+    std::size_t head = queue.size();
+    queue.push_back(start);
     m_mark[start] = mark;
     const Index task = mark >= 0 ? mark : ~mark;
-    while (head < m_queue.size()) {
-      const Index f = m_queue[head++];
+    while (head < queue.size()) {
+      const Index f = queue[head++];
       for (Index g : m_graph.of(f)) {
-        if (m_stamp[g] == task && m_mark[g] != mark) {
+        // A neighbour outside the range may be stamped by another thread at this moment
+        // (never with this task's id), hence the atomic read.
+        if (std::atomic_ref<Index>(m_stamp[g]).load(std::memory_order_relaxed) == task &&
+            m_mark[g] != mark) {
           m_mark[g] = mark;
-          m_queue.push_back(g);
+          queue.push_back(g);
         }
       }
     }
@@ -126,16 +144,15 @@ class SurfaceSplitter {
 
   // Whole components to each side, ordered by their centres along the widest axis, as
   // close to half of the faces on the left as whole components allow (at least one each).
-  Index split_components(std::span<Index> range, Index half) {
-    const std::size_t count = m_component_starts.size() - 1;
+  Index split_components(std::span<Index> range, Index half, const SplitScratch& scratch) const {
+    const std::vector<Index>& starts = scratch.component_starts;
+    const std::size_t count = starts.size() - 1;
     std::vector<Vec3> mean(count, Vec3::Zero());
     Eigen::Array3d low = Eigen::Array3d::Constant(std::numeric_limits<double>::infinity());
     Eigen::Array3d high = -low;
     for (std::size_t c = 0; c < count; ++c) {
-      for (Index i = m_component_starts[c]; i < m_component_starts[c + 1]; ++i) {
-        mean[c] += m_centers[m_queue[i]];
-      }
-      mean[c] /= m_component_starts[c + 1] - m_component_starts[c];
+      for (Index i = starts[c]; i < starts[c + 1]; ++i) mean[c] += m_centers[scratch.queue[i]];
+      mean[c] /= starts[c + 1] - starts[c];
       low = low.min(mean[c].array());
       high = high.max(mean[c].array());
     }
@@ -149,9 +166,7 @@ class SurfaceSplitter {
     Index written = 0, left = 0;
     for (std::size_t k = 0; k < count; ++k) {
       const Index c = order[k];
-      for (Index i = m_component_starts[c]; i < m_component_starts[c + 1]; ++i) {
-        range[written++] = m_queue[i];
-      }
+      for (Index i = starts[c]; i < starts[c + 1]; ++i) range[written++] = scratch.queue[i];
       // Close the left side once it holds half, leaving the right side non-empty.
       if (left == 0 && (written >= half || k + 2 == count)) left = written;
     }
@@ -160,7 +175,61 @@ class SurfaceSplitter {
 
   const FaceGraph& m_graph;
   std::span<const Vec3> m_centers;
-  std::vector<Index> m_stamp, m_mark, m_queue, m_component_starts;
+  mutable std::vector<Index> m_stamp, m_mark;
+};
+
+// Builds the subtree of `node` over order[first, first + count): large subtrees split
+// their two children in parallel, small ones run sequentially with an explicit stack
+// (deep trees stay off the call stack).
+class SurfaceLayoutBuilder {
+ public:
+  SurfaceLayoutBuilder(const SurfaceSplitter& splitter, std::vector<Index>& order,
+                       BvhLayout& layout)
+      : m_splitter(splitter), m_order(order), m_layout(layout) {}
+
+  void build(Index node, Index first, Index count) {
+    if (count < kParallelBelow) return build_sequential(node, first, count);
+    const Index left = split(node, first, count, m_scratch.local());
+    tbb::parallel_invoke([&] { build(node + 1, first, left); },
+                         [&] { build(node + 2 * left, first + left, count - left); });
+  }
+
+ private:
+  static constexpr Index kParallelBelow = 2048;
+
+  // Records node's count and right child (or primitive); returns the left child's size.
+  Index split(Index node, Index first, Index count, SplitScratch& scratch) {
+    m_layout.count[node] = count;
+    if (count == 1) {
+      m_layout.right[node] = m_order[first];
+      return 0;
+    }
+    const std::span<Index> range(m_order.data() + first, static_cast<std::size_t>(count));
+    const Index left = m_splitter.split(range, node, scratch);
+    m_layout.right[node] = node + 2 * left;
+    return left;
+  }
+
+  void build_sequential(Index node, Index first, Index count) {
+    struct Task {
+      Index node, first, count;
+    };
+    SplitScratch& scratch = m_scratch.local();
+    std::vector<Task> stack{{node, first, count}};
+    while (!stack.empty()) {
+      const Task task = stack.back();
+      stack.pop_back();
+      const Index left = split(task.node, task.first, task.count, scratch);
+      if (task.count == 1) continue;
+      stack.push_back({task.node + 2 * left, task.first + left, task.count - left});
+      stack.push_back({task.node + 1, task.first, left});
+    }
+  }
+
+  const SurfaceSplitter& m_splitter;
+  std::vector<Index>& m_order;
+  BvhLayout& m_layout;
+  tbb::enumerable_thread_specific<SplitScratch> m_scratch;
 };
 
 }  // namespace
@@ -175,28 +244,8 @@ BvhLayout build_surface_layout(const TriangleMesh& mesh, std::span<const Index> 
   std::vector<Index> order(static_cast<std::size_t>(n));
   std::iota(order.begin(), order.end(), 0);
   const FaceGraph graph(mesh, faces);
-  SurfaceSplitter splitter(graph, centers);
-
-  struct Task {
-    Index node, first, count;
-  };
-  std::vector<Task> stack{{0, 0, n}};
-  Index tasks = 0;
-  while (!stack.empty()) {
-    const Task task = stack.back();
-    stack.pop_back();
-    layout.count[task.node] = task.count;
-    if (task.count == 1) {
-      layout.right[task.node] = order[task.first];
-      continue;
-    }
-    const std::span<Index> range(order.data() + task.first, static_cast<std::size_t>(task.count));
-    const Index left = splitter.split(range, tasks++);
-    const Index right_node = task.node + 2 * left;
-    layout.right[task.node] = right_node;
-    stack.push_back({right_node, task.first + left, task.count - left});
-    stack.push_back({task.node + 1, task.first, left});
-  }
+  const SurfaceSplitter splitter(graph, centers);
+  SurfaceLayoutBuilder(splitter, order, layout).build(0, 0, n);
   return layout;
 }
 

@@ -40,7 +40,7 @@ BvhLayout build_median_split_layout(std::span<const Vec3> centers);
 /// - otherwise into the first half of a breadth-first order over edge-adjacent faces from
 ///   a peripheral face (the last face reached from any face) and the rest: a front that
 ///   sweeps the patch, leaving two patches of half the size.
-/// Sequential, O(n log n).
+/// O(n log n); subtrees are split in parallel, and the tree does not depend on scheduling.
 BvhLayout build_surface_layout(const TriangleMesh& mesh, std::span<const Index> faces,
                                std::span<const Vec3> centers);
 

@@ -3,14 +3,44 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
+#include <span>
 
 namespace tailor {
 namespace {
 
-bool face_has_vertex(const TriangleMesh& mesh, Index f, Index v) {
+using Corners = std::array<Index, 3>;
+
+Corners corners_of(const TriangleMesh& mesh, Index f) {
   const auto face = mesh.faces().row(f);
+  return {face[0], face[1], face[2]};
+}
+
+bool has_vertex(const Corners& face, Index v) {
   return face[0] == v || face[1] == v || face[2] == v;
 }
+
+bool share_vertex(const Corners& a, const Corners& b) {
+  return has_vertex(b, a[0]) || has_vertex(b, a[1]) || has_vertex(b, a[2]);
+}
+
+// True when every face of `faces` shares a vertex with every face around `corners`.
+bool all_share_vertex(const TriangleMesh& mesh, std::span<const Index> faces,
+                      std::span<const Corners> around) {
+  for (Index f : faces) {
+    const Corners c = corners_of(mesh, f);
+    for (const Corners& a : around) {
+      if (!share_vertex(c, a)) return false;
+    }
+  }
+  return true;
+}
+
+// Per-thread work space, reused from one vertex or edge to the next.
+struct Scratch {
+  std::vector<Index> near, candidates;
+  std::vector<Corners> around;
+};
 
 // Faces sharing a vertex with face `f` (`f` included), sorted, unique.
 void faces_near(const TriangleMesh& mesh, Index f, std::vector<Index>& out) {
@@ -22,15 +52,20 @@ void faces_near(const TriangleMesh& mesh, Index f, std::vector<Index>& out) {
   out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
-// Runs `body(i, out)` for i in [0, n) in parallel blocks and concatenates the outputs
-// in index order, so the result does not depend on scheduling.
+void sort_unique(std::vector<Index>& values) {
+  std::sort(values.begin(), values.end());
+  values.erase(std::unique(values.begin(), values.end()), values.end());
+}
+
+// Runs `body(i, out, scratch)` for i in [0, n) in parallel blocks and concatenates the
+// outputs in index order, so the result does not depend on scheduling.
 template <class T, class Body>
 std::vector<T> collect_in_order(Index n, Body body) {
   constexpr Index kBlock = 1024;
   const Index num_blocks = (n + kBlock - 1) / kBlock;
   std::vector<std::vector<T>> blocks(static_cast<std::size_t>(num_blocks));
   tbb::parallel_for(Index{0}, num_blocks, [&](Index b) {
-    std::vector<Index> scratch;
+    Scratch scratch;
     for (Index i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) {
       body(i, blocks[static_cast<std::size_t>(b)], scratch);
     }
@@ -38,6 +73,45 @@ std::vector<T> collect_in_order(Index n, Body body) {
   std::vector<T> all;
   for (auto& block : blocks) all.insert(all.end(), block.begin(), block.end());
   return all;
+}
+
+// Orphan faces g of vertex v, in increasing order.
+void add_vertex_orphans(const TriangleMesh& mesh, Index v, std::vector<VertexFacePair>& out,
+                        Scratch& scratch) {
+  const auto around = mesh.vertex_faces(v);
+  if (around.empty()) return;  // unreferenced vertices are not part of the surface
+  // An orphan face g shares a vertex with every face around v, in particular with the
+  // first, so the faces near that one are all the candidates.
+  faces_near(mesh, around[0], scratch.near);
+  scratch.around.clear();
+  for (Index f : around) scratch.around.push_back(corners_of(mesh, f));
+  for (Index g : scratch.near) {
+    const Index one[1] = {g};
+    if (!has_vertex(corners_of(mesh, g), v) && all_share_vertex(mesh, one, scratch.around)) {
+      out.push_back({v, g});
+    }
+  }
+}
+
+// Orphan partners e2 > e1 of edge e1, in increasing order.
+void add_edge_orphans(const TriangleMesh& mesh, Index e1, std::vector<EdgeEdgePair>& out,
+                      Scratch& scratch) {
+  const auto faces1 = mesh.edge_faces(e1);
+  // Every face of an orphan partner e2 shares a vertex with the first face of e1, so e2
+  // is an edge of a face near that one.
+  faces_near(mesh, faces1[0], scratch.near);
+  scratch.candidates.clear();
+  for (Index g : scratch.near) {
+    for (Index e2 : mesh.face_edges(g)) {
+      if (e2 > e1 && !mesh.edges_share_vertex(e1, e2)) scratch.candidates.push_back(e2);
+    }
+  }
+  sort_unique(scratch.candidates);
+  scratch.around.clear();
+  for (Index f : faces1) scratch.around.push_back(corners_of(mesh, f));
+  for (Index e2 : scratch.candidates) {
+    if (all_share_vertex(mesh, mesh.edge_faces(e2), scratch.around)) out.push_back({e1, e2});
+  }
 }
 
 }  // namespace
@@ -60,36 +134,13 @@ std::pair<Index, Index> first_disjoint_face_pair(const TriangleMesh& mesh, Index
 
 IsolatedSet IsolatedSet::build(const TriangleMesh& mesh) {
   IsolatedSet set;
-  // An orphan face g shares a vertex with every face around v, in particular with the
-  // first, so the faces near that one are all the candidates.
   set.vertex_face = collect_in_order<VertexFacePair>(
-      mesh.num_vertices(),
-      [&](Index v, std::vector<VertexFacePair>& out, std::vector<Index>& near) {
-        const auto around = mesh.vertex_faces(v);
-        if (around.empty()) return;  // unreferenced vertices are not part of the surface
-        faces_near(mesh, around[0], near);
-        for (Index g : near) {
-          if (!face_has_vertex(mesh, g, v) && first_face_disjoint_from(mesh, v, g) < 0) {
-            out.push_back({v, g});
-          }
-        }
+      mesh.num_vertices(), [&](Index v, std::vector<VertexFacePair>& out, Scratch& scratch) {
+        add_vertex_orphans(mesh, v, out, scratch);
       });
   set.edge_edge = collect_in_order<EdgeEdgePair>(
-      mesh.num_edges(), [&](Index e1, std::vector<EdgeEdgePair>& out, std::vector<Index>& near) {
-        // Every face of an orphan partner e2 shares a vertex with the first face of e1, so
-        // e2 is an edge of a face near that one.
-        faces_near(mesh, mesh.edge_faces(e1)[0], near);
-        std::vector<Index> candidates;
-        for (Index g : near) {
-          for (Index e2 : mesh.face_edges(g)) {
-            if (e2 > e1 && !mesh.edges_share_vertex(e1, e2)) candidates.push_back(e2);
-          }
-        }
-        std::sort(candidates.begin(), candidates.end());
-        candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-        for (Index e2 : candidates) {
-          if (first_disjoint_face_pair(mesh, e1, e2).first < 0) out.push_back({e1, e2});
-        }
+      mesh.num_edges(), [&](Index e1, std::vector<EdgeEdgePair>& out, Scratch& scratch) {
+        add_edge_orphans(mesh, e1, out, scratch);
       });
   return set;
 }

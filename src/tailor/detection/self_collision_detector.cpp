@@ -1,6 +1,7 @@
 #include "tailor/detection/self_collision_detector.hpp"
 
 #include <fmt/format.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 
 #include <chrono>
@@ -65,10 +66,17 @@ struct SelfCollisionDetector::Impl {
     arena.execute([&] {
       check_positions(mesh, x_build, "the build frame");
       if (use_radial_view) radial = RadialViewCulling(mesh, x_build, std::move(section_loops));
-      bvh = MeshBvh(mesh, x_build);
-      if (config.normal_cones && config.contour_test) contours = NodeContours(mesh, bvh);
-      if (config.adjacency_culling) isolated = IsolatedSet::build(mesh);
-      generator = PrimitivePairGenerator(mesh);
+      // The isolated set needs only the topology: it is built beside the tree and its
+      // contours (the contours' recursion is sequential).
+      tbb::parallel_invoke(
+          [&] {
+            bvh = MeshBvh(mesh, x_build);
+            if (config.normal_cones && config.contour_test) contours = NodeContours(mesh, bvh);
+          },
+          [&] {
+            if (config.adjacency_culling) isolated = IsolatedSet::build(mesh);
+            generator = PrimitivePairGenerator(mesh);
+          });
     });
   }
 

@@ -107,6 +107,60 @@ ProceduralStep make_folded_cloth_on_sphere(std::int64_t target_triangles, std::u
   return step;
 }
 
+ProceduralStep make_pleated_cloth(std::int64_t target_triangles, int layers, std::uint64_t seed) {
+  if (target_triangles < 200 || layers < 2) {
+    throw std::invalid_argument("make_pleated_cloth: at least 200 triangles and 2 layers");
+  }
+  constexpr int kFoldCells = 2;
+  constexpr double kHalfWidth = 0.8;  // each layer spans [-0.8, 0.8]²
+  // 2 n (layers n + (layers - 1) kFoldCells) triangles for n cells across.
+  const int n = std::max(5, static_cast<int>(std::lround(std::sqrt(
+                                static_cast<double>(target_triangles) / (2.0 * layers)))));
+  const int per_layer = n + kFoldCells;  // cells along the strip per layer and its fold
+  const int along = layers * n + (layers - 1) * kFoldCells;
+  const double h = 2 * kHalfWidth / n;  // edge length of the flat parts
+  const double gap = 0.4 * h;           // distance between consecutive layers
+
+  ProceduralStep step;
+  MeshData grid = make_grid(along, n, 1.0, 1.0);
+  step.faces = std::move(grid.faces);
+  step.x0.resize(grid.vertices.rows(), 3);
+  step.x1.resize(grid.vertices.rows(), 3);
+  Random random(seed);
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= along; ++i) {
+      const Eigen::Index v = static_cast<Eigen::Index>(j) * (along + 1) + i;
+      const double z = -kHalfWidth + j * h;
+      // Layer l runs along +x when l is even, -x when odd; a half-circle fold of diameter
+      // `gap` joins it to the next. `level` is the height in layers (fractional in folds).
+      const int l = std::min(i / per_layer, layers - 1);
+      const int cell = i - l * per_layer;
+      const double direction = l % 2 == 0 ? 1.0 : -1.0;
+      double x = 0, level = l, jitter = 0.15 * h;
+      if (cell <= n) {
+        x = direction * (-kHalfWidth + cell * h);
+      } else {
+        const double phi = std::numbers::pi * (cell - n) / kFoldCells;
+        x = direction * (kHalfWidth + 0.5 * gap * std::sin(phi));
+        level = l + 0.5 * (1 - std::cos(phi));
+        jitter = 0.02 * h;  // keep the tight fold free of self-intersection
+      }
+      const double jx = jitter * random.symmetric(), jz = jitter * random.symmetric();
+      step.x0.row(v) << x + jx, level * gap, z + jz;
+      // Each layer heaves by up to 1.6 gaps in a smooth wave of its own phase, so every
+      // layer passes through its neighbours over part of its area, and slides a little
+      // (alternating directions: the edges of consecutive layers cross).
+      const double phase = 1.7 * level;
+      const double heave = 2.5 * gap * std::sin(2.5 * std::numbers::pi * x / kHalfWidth + phase) *
+                           std::cos(1.5 * std::numbers::pi * z / kHalfWidth + 0.6 * phase);
+      const double slide = (l % 2 == 0 ? 4.0 : -4.0) * h;
+      const double sx = 0.05 * h * random.symmetric(), sz = 0.05 * h * random.symmetric();
+      step.x1.row(v) << x + jx + slide + sx, level * gap + heave, z + jz + sz;
+    }
+  }
+  return step;
+}
+
 ProceduralStep make_crumpling_cloth_step(std::int64_t target_triangles) {
   if (target_triangles < 8)
     throw std::invalid_argument("make_crumpling_cloth_step: at least 8 triangles");

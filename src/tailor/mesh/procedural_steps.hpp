@@ -26,6 +26,16 @@ struct ProceduralStep {
 /// (>= 200) sets the resolution; the result has about that many.
 ProceduralStep make_folded_cloth_on_sphere(std::int64_t target_triangles, std::uint64_t seed = 1);
 
+/// A dense-contact step with the statistics of real contact (cloth-ball: some 40 candidate
+/// triangle pairs and more than one collision per triangle): a square cloth pleated into
+/// `layers` flat layers half an edge length apart, joined by tight folds, every layer
+/// heaving by up to 1.6 gaps in a smooth wave of its own phase (so each passes through its
+/// neighbours over part of its area) and sliding by a quarter edge, alternating direction
+/// from layer to layer. Small random tangential jitter, as in make_folded_cloth_on_sphere.
+/// `target_triangles` (>= 200) sets the resolution; the result has about that many.
+ProceduralStep make_pleated_cloth(std::int64_t target_triangles, int layers = 6,
+                                  std::uint64_t seed = 1);
+
 /// A contact-free step of a large deformation: a unit square grid (about `target_triangles`
 /// triangles, >= 8) crumpling from t = 0.5 to t = 0.51 (crumpling_cloth). The cloth stays
 /// a height field over the plane during the step, so it has no self-collision; it is the
