@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 
 #include "tailor/candidates/batch_pair_filters.hpp"
 
@@ -139,14 +140,21 @@ class Stages {
               out);
   }
 
-  // Stage 1 and the rest: the feature pairs CTP (f, g) owes. The six corners are read
-  // once; their boxes are shared by all 15 candidate pairs. `sides`: the triangle
-  // filter's corner sides (none known when it is off).
+  // Stage 1 and the rest: the feature pairs CTP (f, g) owes. Which ones it owes is
+  // settled first from topology alone (most CTPs owe few of their 15 pairs, some none);
+  // only then are the six corners read, once, their boxes shared by the owed pairs.
+  // `sides`: the triangle filter's corner sides (none known when it is off).
   void expand(Index f, Index g, TrianglePairSides sides, ThreadOutput& out) const {
     const FaceArray& faces = m_mesh.faces();
     const Index face[2][3] = {{faces(f, 0), faces(f, 1), faces(f, 2)},
                               {faces(g, 0), faces(g, 1), faces(g, 2)}};
-    const Index ids[2] = {f, g};
+    bool disjoint = true;
+    for (int k = 0; k < 3; ++k) disjoint &= !contains(face[1], face[0][k]);
+    const auto edges_f = m_mesh.face_edges(f), edges_g = m_mesh.face_edges(g);
+    const unsigned vf_owed = owed_vertex_faces(f, g, face, disjoint);
+    const unsigned ee_owed = owed_edge_edges(f, g, face, edges_f, edges_g, disjoint);
+    if ((vf_owed | ee_owed) == 0) return;
+
     Corner corners[2][3];
     Box corner_boxes[2][3], face_boxes[2];
     for (int s = 0; s < 2; ++s) {
@@ -156,46 +164,36 @@ class Stages {
       }
       face_boxes[s] = joined(joined(corner_boxes[s][0], corner_boxes[s][1]), corner_boxes[s][2]);
     }
-    bool disjoint = true;
-    for (int k = 0; k < 3; ++k) disjoint &= !contains(face[1], face[0][k]);
-
-    for (int s = 0; s < 2; ++s) {
-      const int o = 1 - s;
-      for (int k = 0; k < 3; ++k) {
-        const Index v = face[s][k];
-        if (!disjoint && contains(face[o], v)) continue;
-        if (!owes_vertex_face(ids[s], k, v, ids[o], face[o], disjoint)) continue;
-        const int bit =
-            s == 0 ? TrianglePairSides::first_corner(k) : TrianglePairSides::second_corner(k);
-        vertex_face(v, ids[o], corners[s][k], corners[o][0], corners[o][1], corners[o][2],
-                    corner_boxes[s][k], face_boxes[o], sides.corner_off_plane(bit), out);
-      }
+    const Index ids[2] = {f, g};
+    for (unsigned bits = vf_owed; bits != 0; bits &= bits - 1) {
+      const int slot = std::countr_zero(bits);  // 3 s + k: corner k of side s
+      const int s = slot / 3, k = slot % 3, o = 1 - s;
+      const int bit =
+          s == 0 ? TrianglePairSides::first_corner(k) : TrianglePairSides::second_corner(k);
+      vertex_face(face[s][k], ids[o], corners[s][k], corners[o][0], corners[o][1], corners[o][2],
+                  corner_boxes[s][k], face_boxes[o], sides.corner_off_plane(bit), out);
     }
-
-    const auto edges_f = m_mesh.face_edges(f), edges_g = m_mesh.face_edges(g);
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) {
-        const Index ef = edges_f[i], eg = edges_g[j];
-        if (!disjoint && m_mesh.edges_share_vertex(ef, eg)) continue;
-        if (!owes_edge_edge(f, i, ef, face[0], g, j, eg, face[1], disjoint)) continue;
-        // Edge i of a face joins its corners i and i+1.
-        const int i1 = (i + 1) % 3, j1 = (j + 1) % 3;
-        const bool off_plane = sides.segment_off_plane(TrianglePairSides::first_corner(i),
-                                                       TrianglePairSides::first_corner(i1)) ||
-                               sides.segment_off_plane(TrianglePairSides::second_corner(j),
-                                                       TrianglePairSides::second_corner(j1));
-        Box box_f = joined(corner_boxes[0][i], corner_boxes[0][i1]);
-        Box box_g = joined(corner_boxes[1][j], corner_boxes[1][j1]);
-        // Orient each edge as stored (a < b) and order the pair by edge id, so that a pair
-        // reaches the filters with the same coordinates whichever CTP owes it.
-        Corner a = corners[0][i], b = corners[0][i1], c = corners[1][j], d = corners[1][j1];
-        if (face[0][i] > face[0][i1]) std::swap(a, b);
-        if (face[1][j] > face[1][j1]) std::swap(c, d);
-        if (ef < eg) {
-          edge_edge(ef, eg, a, b, c, d, box_f, box_g, off_plane, out);
-        } else {
-          edge_edge(eg, ef, c, d, a, b, box_g, box_f, off_plane, out);
-        }
+    for (unsigned bits = ee_owed; bits != 0; bits &= bits - 1) {
+      const int slot = std::countr_zero(bits);  // 3 i + j: edge i of f, edge j of g
+      const int i = slot / 3, j = slot % 3;
+      const Index ef = edges_f[i], eg = edges_g[j];
+      // Edge i of a face joins its corners i and i+1.
+      const int i1 = (i + 1) % 3, j1 = (j + 1) % 3;
+      const bool off_plane = sides.segment_off_plane(TrianglePairSides::first_corner(i),
+                                                     TrianglePairSides::first_corner(i1)) ||
+                             sides.segment_off_plane(TrianglePairSides::second_corner(j),
+                                                     TrianglePairSides::second_corner(j1));
+      const Box box_f = joined(corner_boxes[0][i], corner_boxes[0][i1]);
+      const Box box_g = joined(corner_boxes[1][j], corner_boxes[1][j1]);
+      // Orient each edge as stored (a < b) and order the pair by edge id, so that a pair
+      // reaches the filters with the same coordinates whichever CTP owes it.
+      Corner a = corners[0][i], b = corners[0][i1], c = corners[1][j], d = corners[1][j1];
+      if (face[0][i] > face[0][i1]) std::swap(a, b);
+      if (face[1][j] > face[1][j1]) std::swap(c, d);
+      if (ef < eg) {
+        edge_edge(ef, eg, a, b, c, d, box_f, box_g, off_plane, out);
+      } else {
+        edge_edge(eg, ef, c, d, a, b, box_g, box_f, off_plane, out);
       }
     }
   }
@@ -214,6 +212,37 @@ class Stages {
     batch.add(first, second, {points[0].t0, points[1].t0, points[2].t0, points[3].t0},
               {points[0].t1, points[1].t1, points[2].t1, points[3].t1});
     if (batch.full()) flush(kind, m_filters, out);
+  }
+
+  // Bit 3 s + k: the CTP owes the VF pair (corner k of side s, the other side's face).
+  unsigned owed_vertex_faces(Index f, Index g, const Index (&face)[2][3], bool disjoint) const {
+    const Index ids[2] = {f, g};
+    unsigned owed = 0;
+    for (int s = 0; s < 2; ++s) {
+      const int o = 1 - s;
+      for (int k = 0; k < 3; ++k) {
+        const Index v = face[s][k];
+        if (!disjoint && contains(face[o], v)) continue;
+        if (owes_vertex_face(ids[s], k, v, ids[o], face[o], disjoint)) owed |= 1u << (3 * s + k);
+      }
+    }
+    return owed;
+  }
+
+  // Bit 3 i + j: the CTP owes the EE pair (edge i of f, edge j of g).
+  unsigned owed_edge_edges(Index f, Index g, const Index (&face)[2][3],
+                           const std::array<Index, 3>& edges_f, const std::array<Index, 3>& edges_g,
+                           bool disjoint) const {
+    unsigned owed = 0;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        const Index ef = edges_f[i], eg = edges_g[j];
+        if (!disjoint && m_mesh.edges_share_vertex(ef, eg)) continue;
+        if (owes_edge_edge(f, i, ef, face[0], g, j, eg, face[1], disjoint))
+          owed |= 1u << (3 * i + j);
+      }
+    }
+    return owed;
   }
 
   // Whether CTP (from, to) is the representative of VF pair (corner k of `from`, `to`).

@@ -66,13 +66,21 @@ class CandidateTraversal::Walk {
     return false;
   }
 
+  // Tests the boxes of a node pair (counted as visited) and, when they overlap, walks it.
   void pair(const MeshBvh& a, Index node_a, const MeshBvh& b, Index node_b, ThreadOutput& out) {
     ++out.counts.node_pairs_visited;
-    if (!a.box(node_a).overlaps(b.box(node_b))) return;
+    if (a.box(node_a).overlaps(b.box(node_b))) overlapping_pair(a, node_a, b, node_b, out);
+  }
+
+  // A node pair whose boxes overlap: a candidate triangle pair at two leaves, otherwise
+  // the larger node is split and both child pairs are tested here, so that the many pairs
+  // whose boxes do not overlap cost no call.
+  void overlapping_pair(const MeshBvh& a, Index node_a, const MeshBvh& b, Index node_b,
+                        ThreadOutput& out) {
     const bool leaf_a = a.is_leaf(node_a), leaf_b = b.is_leaf(node_b);
     if (leaf_a && leaf_b) {
       Index f = a.leaf_face(node_a), g = b.leaf_face(node_b);
-      if (m_options.adjacency_culling && m_mesh.faces_share_vertex(f, g)) return;
+      if (m_options.adjacency_culling && share_vertex(f, g)) return;
       if (f > g) std::swap(f, g);
       out.push({f, g});
       return;
@@ -83,16 +91,32 @@ class CandidateTraversal::Walk {
     const Index child2_a = split_a ? a.right(node_a) : node_a;
     const Index child1_b = split_a ? node_b : b.left(node_b);
     const Index child2_b = split_a ? node_b : b.right(node_b);
-    if (size_a + size_b > kTaskGrain) {
-      tbb::parallel_invoke([&] { pair(a, child1_a, b, child1_b, m_outputs.local()); },
-                           [&] { pair(a, child2_a, b, child2_b, m_outputs.local()); });
-    } else {
-      pair(a, child1_a, b, child1_b, out);
-      pair(a, child2_a, b, child2_b, out);
+    out.counts.node_pairs_visited += 2;
+    const bool overlap1 = a.box(child1_a).overlaps(b.box(child1_b));
+    const bool overlap2 = a.box(child2_a).overlaps(b.box(child2_b));
+    if (overlap1 && overlap2 && size_a + size_b > kTaskGrain) {
+      tbb::parallel_invoke([&] { overlapping_pair(a, child1_a, b, child1_b, m_outputs.local()); },
+                           [&] { overlapping_pair(a, child2_a, b, child2_b, m_outputs.local()); });
+      return;
     }
+    if (overlap1) overlapping_pair(a, child1_a, b, child1_b, out);
+    if (overlap2) overlapping_pair(a, child2_a, b, child2_b, out);
   }
 
  private:
+  // Faces f and g share a vertex (TriangleMesh::faces_share_vertex, inlined: it runs for
+  // every leaf pair whose boxes overlap).
+  bool share_vertex(Index f, Index g) const {
+    const FaceArray& faces = m_mesh.faces();
+    const Index a0 = faces(f, 0), a1 = faces(f, 1), a2 = faces(f, 2);
+    bool shared = false;
+    for (int k = 0; k < 3; ++k) {
+      const Index v = faces(g, k);
+      shared |= (v == a0) | (v == a1) | (v == a2);
+    }
+    return shared;
+  }
+
   const TriangleMesh& m_mesh;
   const TraversalOptions& m_options;
   tbb::enumerable_thread_specific<ThreadOutput>& m_outputs;
