@@ -92,54 +92,60 @@ struct SplitScratch {
 class SurfaceSplitter {
  public:
   SurfaceSplitter(const FaceGraph& graph, std::span<const Vec3> centers)
-      : m_graph(graph),
-        m_centers(centers),
-        m_stamp(centers.size(), -1),
-        m_mark(centers.size(), -1) {}
+      : m_graph(graph), m_centers(centers), m_state(centers.size(), -1) {}
 
   // Reorders `range` so that its first `returned` faces form the left child. `task` is
   // unique among all splits (the node id).
   Index split(std::span<Index> range, Index task, SplitScratch& scratch) const {
-    for (Index f : range) std::atomic_ref<Index>(m_stamp[f]).store(task, std::memory_order_relaxed);
+    // A face's state in this split: 3 task (in the range), + 1 (reached by the first
+    // pass), + 2 (by the second). One array, one access per neighbour.
+    const Index in_range = 3 * task, first_pass = in_range + 1, second_pass = in_range + 2;
+    for (Index f : range) std::atomic_ref<Index>(m_state[f]).store(in_range, kRelaxed);
     // Components of the range (breadth-first, in range order).
-    scratch.queue.clear();
+    scratch.queue.resize(range.size());
     scratch.component_starts.clear();
+    Index tail = 0;
     for (Index f : range) {
-      if (m_mark[f] == task) continue;
-      scratch.component_starts.push_back(static_cast<Index>(scratch.queue.size()));
-      visit_from(f, task, scratch.queue);
+      if (m_state[f] != in_range) continue;
+      scratch.component_starts.push_back(tail);
+      tail = visit_from(f, in_range, first_pass, scratch.queue.data(), tail);
     }
-    scratch.component_starts.push_back(static_cast<Index>(scratch.queue.size()));
+    scratch.component_starts.push_back(tail);
     const Index half = static_cast<Index>(range.size()) / 2;
     if (scratch.component_starts.size() > 2) return split_components(range, half, scratch);
     // One patch: breadth-first from a peripheral face; the first half goes left.
-    const Index far = scratch.queue.back();
-    scratch.queue.clear();
-    visit_from(far, ~task, scratch.queue);  // a fresh mark value for this pass
-    std::copy(scratch.queue.begin(), scratch.queue.end(), range.begin());
+    const Index far = scratch.queue[tail - 1];
+    tail = visit_from(far, first_pass, second_pass, scratch.queue.data(), 0);
+    std::copy(scratch.queue.begin(), scratch.queue.begin() + tail, range.begin());
     return half;
   }
 
  private:
-  // Appends to `queue` every face of the current range reachable from `start`, marking
-  // them with `mark`.
-  void visit_from(Index start, Index mark, std::vector<Index>& queue) const {
-    std::size_t head = queue.size();
-    queue.push_back(start);
-    m_mark[start] = mark;
-    const Index task = mark >= 0 ? mark : ~mark;
-    while (head < queue.size()) {
+  static constexpr std::memory_order kRelaxed = std::memory_order_relaxed;
+
+  // Writes to queue[tail...] every face in state `from` reachable from `start` through
+  // such faces, moving them to state `to`; returns the new tail. A neighbour outside the
+  // range may be written by another thread at this moment (never with this split's
+  // states), hence the atomic accesses.
+  Index visit_from(Index start, Index from, Index to, Index* queue, Index tail) const {
+    const Index* offsets = m_graph.offsets.data();
+    const Index* neighbors = m_graph.neighbors.data();
+    Index* state = m_state.data();
+    Index head = tail;
+    queue[tail++] = start;
+    std::atomic_ref<Index>(state[start]).store(to, kRelaxed);
+    while (head < tail) {
       const Index f = queue[head++];
-      for (Index g : m_graph.of(f)) {
-        // A neighbour outside the range may be stamped by another thread at this moment
-        // (never with this task's id), hence the atomic read.
-        if (std::atomic_ref<Index>(m_stamp[g]).load(std::memory_order_relaxed) == task &&
-            m_mark[g] != mark) {
-          m_mark[g] = mark;
-          queue.push_back(g);
+      for (Index i = offsets[f]; i < offsets[f + 1]; ++i) {
+        const Index g = neighbors[i];
+        std::atomic_ref<Index> g_state(state[g]);
+        if (g_state.load(kRelaxed) == from) {
+          g_state.store(to, kRelaxed);
+          queue[tail++] = g;
         }
       }
     }
+    return tail;
   }
 
   // Whole components to each side, ordered by their centres along the widest axis, as
@@ -175,7 +181,7 @@ class SurfaceSplitter {
 
   const FaceGraph& m_graph;
   std::span<const Vec3> m_centers;
-  mutable std::vector<Index> m_stamp, m_mark;
+  mutable std::vector<Index> m_state;
 };
 
 // Builds the subtree of `node` over order[first, first + count): large subtrees split

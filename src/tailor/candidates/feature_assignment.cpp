@@ -1,5 +1,7 @@
 #include "tailor/candidates/feature_assignment.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <bit>
 
 #include "tailor/candidates/isolated_set.hpp"
@@ -32,6 +34,17 @@ FeatureAssignment::FeatureAssignment(const TriangleMesh& mesh)
       }
     }
   }
+  m_face_features.resize(static_cast<std::size_t>(mesh.num_faces()));
+  tbb::parallel_for(Index{0}, mesh.num_faces(), [&](Index f) {
+    FaceFeatures& record = m_face_features[f];
+    record.edges = mesh.face_edges(f);
+    for (int k = 0; k < 3; ++k) {
+      record.corners[k] = faces(f, k);
+      record.corner_owner_others[k] = m_owner_others[faces(f, k)];
+      record.edge_owner_opposite[k] = m_owner_opposite[record.edges[k]];
+    }
+    record.owned = m_owned[f];
+  });
 }
 
 int FeatureAssignment::vertices_assigned(Index f) const {

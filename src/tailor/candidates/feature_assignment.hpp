@@ -29,6 +29,19 @@ namespace tailor {
 /// owner share a vertex with g" needs no access to the owner's face.
 class FeatureAssignment {
  public:
+  /// Everything pair generation asks about one face, in one cache line: its corners and
+  /// edges, which of them it owns, and for each the owner's other corners, so deciding
+  /// which of a triangle pair's 15 feature pairs it owes reads two records and nothing
+  /// indexed by vertex or edge.
+  struct alignas(64) FaceFeatures {
+    std::array<Index, 3> corners;  ///< faces(f, k)
+    std::array<Index, 3> edges;    ///< face_edges(f)[k]: corners k and k+1
+    /// owner_other_corners(corners[k])
+    std::array<std::array<Index, 2>, 3> corner_owner_others;
+    std::array<Index, 3> edge_owner_opposite;  ///< owner_opposite_corner(edges[k])
+    std::uint32_t owned;                       ///< bits 0-2: corners, 3-5: edges
+  };
+
   FeatureAssignment() = default;
   explicit FeatureAssignment(const TriangleMesh& mesh);
 
@@ -46,6 +59,8 @@ class FeatureAssignment {
   const std::array<Index, 2>& owner_other_corners(Index v) const { return m_owner_others[v]; }
   /// The corner of owner(e) that is not on edge e.
   Index owner_opposite_corner(Index e) const { return m_owner_opposite[e]; }
+  /// The record of face `f`.
+  const FaceFeatures& face_features(Index f) const { return m_face_features[f]; }
 
   /// The face of the triangle pair that tests VF pair (v, g), v not in g; -1 if the pair
   /// is isolated (only possible with adjacency culling).
@@ -60,6 +75,7 @@ class FeatureAssignment {
   std::vector<std::uint8_t> m_owned;  // bits 0-2: corners, 3-5: edges
   std::vector<std::array<Index, 2>> m_owner_others;
   std::vector<Index> m_owner_opposite;
+  std::vector<FaceFeatures> m_face_features;
 };
 
 }  // namespace tailor

@@ -24,14 +24,19 @@ bool share_vertex(const Corners& a, const Corners& b) {
   return has_vertex(b, a[0]) || has_vertex(b, a[1]) || has_vertex(b, a[2]);
 }
 
-// True when every face of `faces` shares a vertex with every face around `corners`.
+// True when the face with `corners` shares a vertex with every face of `around`.
+bool all_share_vertex(const Corners& corners, std::span<const Corners> around) {
+  for (const Corners& a : around) {
+    if (!share_vertex(corners, a)) return false;
+  }
+  return true;
+}
+
+// True when every face of `faces` shares a vertex with every face of `around`.
 bool all_share_vertex(const TriangleMesh& mesh, std::span<const Index> faces,
                       std::span<const Corners> around) {
   for (Index f : faces) {
-    const Corners c = corners_of(mesh, f);
-    for (const Corners& a : around) {
-      if (!share_vertex(c, a)) return false;
-    }
+    if (!all_share_vertex(corners_of(mesh, f), around)) return false;
   }
   return true;
 }
@@ -41,16 +46,6 @@ struct Scratch {
   std::vector<Index> near, candidates;
   std::vector<Corners> around;
 };
-
-// Faces sharing a vertex with face `f` (`f` included), sorted, unique.
-void faces_near(const TriangleMesh& mesh, Index f, std::vector<Index>& out) {
-  out.clear();
-  for (int k = 0; k < 3; ++k) {
-    for (Index g : mesh.vertex_faces(mesh.faces()(f, k))) out.push_back(g);
-  }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-}
 
 void sort_unique(std::vector<Index>& values) {
   std::sort(values.begin(), values.end());
@@ -75,43 +70,80 @@ std::vector<T> collect_in_order(Index n, Body body) {
   return all;
 }
 
+// Appends the found partners of one feature in increasing order, once each (a partner
+// can be reached from two candidate faces).
+template <class Pair>
+void append_sorted(std::vector<Index>& found, Index feature, std::vector<Pair>& out) {
+  sort_unique(found);
+  for (Index partner : found) out.push_back({feature, partner});
+}
+
 // Orphan faces g of vertex v, in increasing order.
 void add_vertex_orphans(const TriangleMesh& mesh, Index v, std::vector<VertexFacePair>& out,
                         Scratch& scratch) {
   const auto around = mesh.vertex_faces(v);
   if (around.empty()) return;  // unreferenced vertices are not part of the surface
-  // An orphan face g shares a vertex with every face around v, in particular with the
-  // first, so the faces near that one are all the candidates.
-  faces_near(mesh, around[0], scratch.near);
   scratch.around.clear();
   for (Index f : around) scratch.around.push_back(corners_of(mesh, f));
-  for (Index g : scratch.near) {
-    const Index one[1] = {g};
-    if (!has_vertex(corners_of(mesh, g), v) && all_share_vertex(mesh, one, scratch.around)) {
-      out.push_back({v, g});
+  // An orphan face g (v not in g) shares a vertex with the first face around v, (v, x, y),
+  // so it is a face around x or around y.
+  scratch.candidates.clear();
+  for (Index w : scratch.around[0]) {
+    if (w == v) continue;
+    for (Index g : mesh.vertex_faces(w)) {
+      const Corners corners = corners_of(mesh, g);
+      if (!has_vertex(corners, v) && all_share_vertex(corners, scratch.around)) {
+        scratch.candidates.push_back(g);
+      }
     }
   }
+  append_sorted(scratch.candidates, v, out);
 }
 
-// Orphan partners e2 > e1 of edge e1, in increasing order.
+// Orphan partners e2 > e1 of edge e1 = (a, b), in increasing order.
 void add_edge_orphans(const TriangleMesh& mesh, Index e1, std::vector<EdgeEdgePair>& out,
                       Scratch& scratch) {
+  const Index a = mesh.edges()(e1, 0), b = mesh.edges()(e1, 1);
   const auto faces1 = mesh.edge_faces(e1);
-  // Every face of an orphan partner e2 shares a vertex with the first face of e1, so e2
-  // is an edge of a face near that one.
-  faces_near(mesh, faces1[0], scratch.near);
-  scratch.candidates.clear();
-  for (Index g : scratch.near) {
-    for (Index e2 : mesh.face_edges(g)) {
-      if (e2 > e1 && !mesh.edges_share_vertex(e1, e2)) scratch.candidates.push_back(e2);
-    }
-  }
-  sort_unique(scratch.candidates);
   scratch.around.clear();
   for (Index f : faces1) scratch.around.push_back(corners_of(mesh, f));
-  for (Index e2 : scratch.candidates) {
-    if (all_share_vertex(mesh, mesh.edge_faces(e2), scratch.around)) out.push_back({e1, e2});
+  // A face G of an orphan partner shares a vertex with every face (a, b, c_i) of e1: it
+  // holds a, or b, or else every apex c_i. So G is a face around a, around b, or around
+  // c_1 holding every other apex; e2 is an edge of G.
+  scratch.candidates.clear();
+  const auto try_partner = [&](Index e2) {
+    if (all_share_vertex(mesh, mesh.edge_faces(e2), scratch.around)) {
+      scratch.candidates.push_back(e2);
+    }
+  };
+  // Around a (b): the one edge of G away from a (b), edge (j + 1) of G when a is its
+  // corner j, if it avoids the other end too.
+  for (const Index end : {a, b}) {
+    const Index other_end = end == a ? b : a;
+    for (Index g : mesh.vertex_faces(end)) {
+      const Corners corners = corners_of(mesh, g);
+      const int j = corners[0] == end ? 0 : corners[1] == end ? 1 : 2;
+      const Index e2 = mesh.face_edges(g)[(j + 1) % 3];
+      if (e2 > e1 && corners[(j + 1) % 3] != other_end && corners[(j + 2) % 3] != other_end) {
+        try_partner(e2);
+      }
+    }
   }
+  const auto apex = [&](const Corners& face) {
+    return face[0] != a && face[0] != b   ? face[0]
+           : face[1] != a && face[1] != b ? face[1]
+                                          : face[2];
+  };
+  for (Index g : mesh.vertex_faces(apex(scratch.around[0]))) {
+    const Corners corners = corners_of(mesh, g);
+    bool holds_every_apex = !has_vertex(corners, a) && !has_vertex(corners, b);
+    for (const Corners& f : scratch.around) holds_every_apex &= has_vertex(corners, apex(f));
+    if (!holds_every_apex) continue;  // faces around a or b are done above
+    for (Index e2 : mesh.face_edges(g)) {
+      if (e2 > e1) try_partner(e2);  // G avoids a and b, so its edges do
+    }
+  }
+  append_sorted(scratch.candidates, e1, out);
 }
 
 }  // namespace

@@ -57,6 +57,7 @@ bool contains(const Index* face, Index v) {
 }
 
 using ThreadOutput = PrimitivePairGenerator::ThreadOutput;
+using FaceFeatures = FeatureAssignment::FaceFeatures;
 
 // Appends a pair that every filter kept.
 void keep(PairKind kind, Index first, Index second, ThreadOutput& out) {
@@ -145,14 +146,17 @@ class Stages {
   // only then are the six corners read, once, their boxes shared by the owed pairs.
   // `sides`: the triangle filter's corner sides (none known when it is off).
   void expand(Index f, Index g, TrianglePairSides sides, ThreadOutput& out) const {
-    const FaceArray& faces = m_mesh.faces();
-    const Index face[2][3] = {{faces(f, 0), faces(f, 1), faces(f, 2)},
-                              {faces(g, 0), faces(g, 1), faces(g, 2)}};
+    const FaceFeatures* record[2] = {&m_assignment.face_features(f),
+                                     &m_assignment.face_features(g)};
+    const Index face[2][3] = {
+        {record[0]->corners[0], record[0]->corners[1], record[0]->corners[2]},
+        {record[1]->corners[0], record[1]->corners[1], record[1]->corners[2]}};
     bool disjoint = true;
     for (int k = 0; k < 3; ++k) disjoint &= !contains(face[1], face[0][k]);
-    const auto edges_f = m_mesh.face_edges(f), edges_g = m_mesh.face_edges(g);
-    const unsigned vf_owed = owed_vertex_faces(f, g, face, disjoint);
-    const unsigned ee_owed = owed_edge_edges(f, g, face, edges_f, edges_g, disjoint);
+    const auto& edges_f = record[0]->edges;
+    const auto& edges_g = record[1]->edges;
+    const unsigned vf_owed = owed_vertex_faces(f, g, record, face, disjoint);
+    const unsigned ee_owed = owed_edge_edges(f, g, record, face, disjoint);
     if ((vf_owed | ee_owed) == 0) return;
 
     Corner corners[2][3];
@@ -215,66 +219,71 @@ class Stages {
   }
 
   // Bit 3 s + k: the CTP owes the VF pair (corner k of side s, the other side's face).
-  unsigned owed_vertex_faces(Index f, Index g, const Index (&face)[2][3], bool disjoint) const {
+  unsigned owed_vertex_faces(Index f, Index g, const FaceFeatures* const (&record)[2],
+                             const Index (&face)[2][3], bool disjoint) const {
     const Index ids[2] = {f, g};
     unsigned owed = 0;
     for (int s = 0; s < 2; ++s) {
       const int o = 1 - s;
       for (int k = 0; k < 3; ++k) {
-        const Index v = face[s][k];
-        if (!disjoint && contains(face[o], v)) continue;
-        if (owes_vertex_face(ids[s], k, v, ids[o], face[o], disjoint)) owed |= 1u << (3 * s + k);
+        if (!disjoint && contains(face[o], face[s][k])) continue;
+        if (owes_vertex_face(ids[s], *record[s], k, ids[o], face[o], disjoint)) {
+          owed |= 1u << (3 * s + k);
+        }
       }
     }
     return owed;
   }
 
   // Bit 3 i + j: the CTP owes the EE pair (edge i of f, edge j of g).
-  unsigned owed_edge_edges(Index f, Index g, const Index (&face)[2][3],
-                           const std::array<Index, 3>& edges_f, const std::array<Index, 3>& edges_g,
-                           bool disjoint) const {
+  unsigned owed_edge_edges(Index f, Index g, const FaceFeatures* const (&record)[2],
+                           const Index (&face)[2][3], bool disjoint) const {
     unsigned owed = 0;
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) {
-        const Index ef = edges_f[i], eg = edges_g[j];
-        if (!disjoint && m_mesh.edges_share_vertex(ef, eg)) continue;
-        if (owes_edge_edge(f, i, ef, face[0], g, j, eg, face[1], disjoint))
+        if (!disjoint && m_mesh.edges_share_vertex(record[0]->edges[i], record[1]->edges[j])) {
+          continue;
+        }
+        if (owes_edge_edge(f, *record[0], i, face[0], g, *record[1], j, face[1], disjoint)) {
           owed |= 1u << (3 * i + j);
+        }
       }
     }
     return owed;
   }
 
   // Whether CTP (from, to) is the representative of VF pair (corner k of `from`, `to`).
-  bool owes_vertex_face(Index from, int k, Index v, Index to, const Index* to_face,
-                        bool disjoint) const {
+  bool owes_vertex_face(Index from, const FaceFeatures& from_record, int k, Index to,
+                        const Index* to_face, bool disjoint) const {
     if (!m_options.feature_assignment) return true;
+    const Index v = from_record.corners[k];
     if (!disjoint)
       return m_assignment.vf_representative(v, to, m_options.adjacency_culling) == from;
-    if (m_assignment.owns_corner(from, k)) return true;  // owner(v) = from, disjoint from `to`
-    if (!m_options.adjacency_culling) return false;      // the representative is owner(v)
+    if ((from_record.owned >> k) & 1) return true;   // owner(v) = from, disjoint from `to`
+    if (!m_options.adjacency_culling) return false;  // the representative is owner(v)
     // owner(v) shares a vertex with `to` only through its other corners (v is not in `to`);
     // otherwise the representative is owner(v) != from.
-    const auto& others = m_assignment.owner_other_corners(v);
+    const auto& others = from_record.corner_owner_others[k];
     if (!contains(to_face, others[0]) && !contains(to_face, others[1])) return false;
     return first_face_disjoint_from(m_mesh, v, to) == from;
   }
 
   // Whether CTP (f, g) is the representative of EE pair (edge i of f, edge j of g).
-  bool owes_edge_edge(Index f, int i, Index ef, const Index* face_f, Index g, int j, Index eg,
-                      const Index* face_g, bool disjoint) const {
+  bool owes_edge_edge(Index f, const FaceFeatures& record_f, int i, const Index* face_f, Index g,
+                      const FaceFeatures& record_g, int j, const Index* face_g,
+                      bool disjoint) const {
     if (!m_options.feature_assignment) return true;
+    const Index ef = record_f.edges[i], eg = record_g.edges[j];
     const Index lo = std::min(ef, eg), hi = std::max(ef, eg);
     const auto expected = ef < eg ? std::pair{f, g} : std::pair{g, f};
     if (!disjoint) {
       return m_assignment.ee_representative(lo, hi, m_options.adjacency_culling) == expected;
     }
-    if (m_assignment.owns_edge(f, i) && m_assignment.owns_edge(g, j)) return true;
+    if ((record_f.owned >> (3 + i)) & (record_g.owned >> (3 + j)) & 1) return true;
     if (!m_options.adjacency_culling) return false;  // the representative is the owners
     // The owners {p1, q1, r1} ⊃ ef and {p2, q2, r2} ⊃ eg: f and g share no vertex, so
     // they can only share r1 or r2.
-    const Index r1 = m_assignment.owner_opposite_corner(ef);
-    const Index r2 = m_assignment.owner_opposite_corner(eg);
+    const Index r1 = record_f.edge_owner_opposite[i], r2 = record_g.edge_owner_opposite[j];
     const Index p1 = face_f[i], q1 = face_f[(i + 1) % 3], p2 = face_g[j], q2 = face_g[(j + 1) % 3];
     if (r1 != p2 && r1 != q2 && r1 != r2 && r2 != p1 && r2 != q1) return false;
     return first_disjoint_face_pair(m_mesh, lo, hi) == expected;
