@@ -22,6 +22,7 @@ struct LaneFlags {
   std::int64_t undecided[PairBatch::kCapacity];     // a coefficient within its bound
   std::int64_t projected[PairBatch::kCapacity];     // the projection's checks passed
   std::int64_t excluded[PairBatch::kCapacity];      // excluded on the whole step
+  std::int64_t halves[PairBatch::kCapacity];        // else excluded on both halves
 };
 
 // One build of the lanes per instruction set (batch_pair_filter_lanes.inc says why).
@@ -45,36 +46,13 @@ constexpr int W = 8;
 #pragma GCC pop_options
 
 using LaneKernel = void (*)(PairKind, const PairBatch&, LanePolynomials&, LaneFlags&);
+using SubdivisionKernel = void (*)(PairKind, const PairBatch&, const LanePolynomials&, LaneFlags&);
 
-template <int N>
-CertifiedBernstein<N> lane_polynomial(const double (&rows)[2 * (N + 1)][PairBatch::kCapacity],
-                                      int lane) {
-  CertifiedBernstein<N> p;
-  for (int c = 0; c <= N; ++c) {
-    p.value[c] = rows[c][lane];
-    p.bound[c] = rows[N + 1 + c][lane];
-  }
-  return p;
-}
-
-// The subdivision below the whole step, for a lane whose whole-step test failed.
-bool halves_excluded(PairKind kind, const LanePolynomials& polys, int lane) {
-  if (kind == PairKind::vertex_face) {
-    projection::VertexFacePolynomials p;
-    p.f = lane_polynomial<3>(polys.cubic, lane);
-    for (int k = 0; k < 3; ++k) p.s[k] = lane_polynomial<2>(polys.quadratic[k], lane);
-    p.o = lane_polynomial<2>(polys.quadratic[3], lane);
-    return projection::halves_excluded(p);
-  }
-  projection::EdgeEdgePolynomials p;
-  p.f = lane_polynomial<3>(polys.cubic, lane);
-  p.g_c = lane_polynomial<2>(polys.quadratic[0], lane);
-  p.g_d = lane_polynomial<2>(polys.quadratic[1], lane);
-  p.h_a = lane_polynomial<2>(polys.quadratic[2], lane);
-  p.h_b = lane_polynomial<2>(polys.quadratic[3], lane);
-  p.m = lane_polynomial<2>(polys.quadratic[4], lane);
-  return projection::halves_excluded(p);
-}
+// The kernels of one instruction set.
+struct Kernels {
+  LaneKernel whole_step;
+  SubdivisionKernel subdivision;
+};
 
 // The exact sign of the coplanarity cubic of one lane (geometry/coplanarity_sign.hpp).
 StepSign exact_lane_sign(const PairBatch& batch, int lane) {
@@ -86,7 +64,7 @@ StepSign exact_lane_sign(const PairBatch& batch, int lane) {
   return coplanarity_sign(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
 }
 
-void verdicts_with(LaneKernel kernel, PairKind kind, PairBatch& batch, PairFilters filters,
+void verdicts_with(Kernels kernels, PairKind kind, PairBatch& batch, PairFilters filters,
                    std::span<PairVerdict, PairBatch::kCapacity> verdicts) {
   for (int row = 0; row < 24; ++row) {
     for (int i = batch.count; i < batch.padded_count(); ++i) {
@@ -95,7 +73,8 @@ void verdicts_with(LaneKernel kernel, PairKind kind, PairBatch& batch, PairFilte
   }
   LanePolynomials polys;
   LaneFlags flags;
-  kernel(kind, batch, polys, flags);
+  kernels.whole_step(kind, batch, polys, flags);
+  if (filters.projection) kernels.subdivision(kind, batch, polys, flags);
   // The order of the one-pair filters (projection_filter.cpp): the certified double signs,
   // the projection filter, then the exact signs.
   for (int lane = 0; lane < batch.count; ++lane) {
@@ -104,7 +83,7 @@ void verdicts_with(LaneKernel kernel, PairKind kind, PairBatch& batch, PairFilte
     if (filters.coplanarity && cubic_ok && flags.cubic_signed[lane] != 0) {
       verdict = PairVerdict::never_coplanar;
     } else if (filters.projection && cubic_ok && flags.projected[lane] != 0 &&
-               (flags.excluded[lane] != 0 || halves_excluded(kind, polys, lane))) {
+               (flags.excluded[lane] != 0 || flags.halves[lane] != 0)) {
       verdict = PairVerdict::apart_in_projection;
     } else if (filters.coplanarity && (!cubic_ok || flags.undecided[lane] != 0) &&
                exact_lane_sign(batch, lane) != StepSign::mixed) {
@@ -120,16 +99,17 @@ namespace detail {
 
 void pair_verdicts_two_lanes(PairKind kind, PairBatch& batch, PairFilters filters,
                              std::span<PairVerdict, PairBatch::kCapacity> verdicts) {
-  verdicts_with(sse2::batch_lanes, kind, batch, filters, verdicts);
+  verdicts_with({sse2::batch_lanes, sse2::subdivided_lanes}, kind, batch, filters, verdicts);
 }
 
 }  // namespace detail
 
 void pair_verdicts(PairKind kind, PairBatch& batch, PairFilters filters,
                    std::span<PairVerdict, PairBatch::kCapacity> verdicts) {
-  static const LaneKernel kernel =
-      lanes::widest<LaneKernel>(avx512::batch_lanes, avx2::batch_lanes, sse2::batch_lanes);
-  verdicts_with(kernel, kind, batch, filters, verdicts);
+  static const Kernels kernels = lanes::widest<Kernels>(
+      {avx512::batch_lanes, avx512::subdivided_lanes}, {avx2::batch_lanes, avx2::subdivided_lanes},
+      {sse2::batch_lanes, sse2::subdivided_lanes});
+  verdicts_with(kernels, kind, batch, filters, verdicts);
 }
 
 }  // namespace tailor
