@@ -1,5 +1,8 @@
 #include "tailor/culling/node_contours.hpp"
 
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 
 namespace tailor {
@@ -10,12 +13,25 @@ struct HalfEdge {
   Index edge, from, to;
 };
 
+// The loops one thread recorded: their vertices, one after another, and where each is.
+struct LoopBuffer {
+  struct Loop {
+    Index slot;
+    std::int64_t start;
+    Index length;
+  };
+  std::vector<Index> vertices;
+  std::vector<Loop> loops;
+};
+
+// Builds bottom-up; subtrees of more than kParallelAbove faces build their two children
+// in parallel, each thread recording loops in its own buffer.
 struct ContourBuilder {
+  static constexpr Index kParallelAbove = 4096;
+
   const TriangleMesh& mesh;
   const MeshBvh& bvh;
-  std::vector<std::int64_t>& starts;
-  std::vector<Index>& lengths;
-  std::vector<Index>& vertices;
+  tbb::enumerable_thread_specific<LoopBuffer> buffers;
 
   // Returns the node's boundary half-edges sorted by edge id; `valid` turns false when
   // the patch is not edge-manifold or not consistently oriented.
@@ -32,8 +48,14 @@ struct ContourBuilder {
                 [](const HalfEdge& a, const HalfEdge& b) { return a.edge < b.edge; });
     } else {
       bool left_valid = true, right_valid = true;
-      std::vector<HalfEdge> left = build(bvh.left(node), left_valid);
-      std::vector<HalfEdge> right = build(bvh.right(node), right_valid);
+      std::vector<HalfEdge> left, right;
+      if (bvh.size(node) > kParallelAbove) {
+        tbb::parallel_invoke([&] { left = build(bvh.left(node), left_valid); },
+                             [&] { right = build(bvh.right(node), right_valid); });
+      } else {
+        left = build(bvh.left(node), left_valid);
+        right = build(bvh.right(node), right_valid);
+      }
       valid = left_valid && right_valid;
       boundary.reserve(left.size() + right.size());
       // Merge; an edge on both sides is interior now, and must be traversed in opposite
@@ -69,7 +91,9 @@ struct ContourBuilder {
                                  [](const HalfEdge& h, Index x) { return h.from < x; });
       return (it == half_edges.end() || it->from != v) ? -1 : it->to;
     };
-    starts[slot] = static_cast<std::int64_t>(vertices.size());
+    LoopBuffer& buffer = buffers.local();
+    std::vector<Index>& vertices = buffer.vertices;
+    const std::int64_t start_at = static_cast<std::int64_t>(vertices.size());
     const Index start = half_edges.front().from;
     Index v = start;
     std::size_t steps = 0;
@@ -79,10 +103,10 @@ struct ContourBuilder {
       ++steps;
     } while (v >= 0 && v != start && steps <= half_edges.size());
     if (v != start || steps != half_edges.size()) {
-      vertices.resize(static_cast<std::size_t>(starts[slot]));  // open chain or several loops
+      vertices.resize(static_cast<std::size_t>(start_at));  // open chain or several loops
       return;
     }
-    lengths[slot] = static_cast<Index>(steps);
+    buffer.loops.push_back({slot, start_at, static_cast<Index>(steps)});
   }
 };
 
@@ -94,9 +118,19 @@ NodeContours::NodeContours(const TriangleMesh& mesh, const MeshBvh& bvh) {
   m_loop_start.assign(static_cast<std::size_t>(bvh.num_masks()), 0);
   m_loop_length.assign(static_cast<std::size_t>(bvh.num_masks()), 0);
   if (n == 0) return;
-  ContourBuilder builder{mesh, bvh, m_loop_start, m_loop_length, m_loop_vertices};
+  ContourBuilder builder{mesh, bvh, {}};
   bool valid = true;
   builder.build(0, valid);
+  // One array of loop vertices; a loop's place in it depends on the scheduling, the loop
+  // of each node does not.
+  for (const LoopBuffer& buffer : builder.buffers) {
+    const auto base = static_cast<std::int64_t>(m_loop_vertices.size());
+    m_loop_vertices.insert(m_loop_vertices.end(), buffer.vertices.begin(), buffer.vertices.end());
+    for (const LoopBuffer::Loop& loop : buffer.loops) {
+      m_loop_start[loop.slot] = base + loop.start;
+      m_loop_length[loop.slot] = loop.length;
+    }
+  }
   m_loop_vertices.shrink_to_fit();
 }
 
