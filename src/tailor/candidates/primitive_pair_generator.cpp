@@ -155,8 +155,13 @@ class Stages {
     for (int k = 0; k < 3; ++k) disjoint &= !contains(face[1], face[0][k]);
     const auto& edges_f = record[0]->edges;
     const auto& edges_g = record[1]->edges;
-    const unsigned vf_owed = owed_vertex_faces(f, g, record, face, disjoint);
-    const unsigned ee_owed = owed_edge_edges(f, g, record, face, disjoint);
+    unsigned vf_owed = 0, ee_owed = 0;
+    if (disjoint && m_options.feature_assignment && m_options.adjacency_culling) {
+      owed_when_disjoint(f, g, record, face, vf_owed, ee_owed);
+    } else {
+      vf_owed = owed_vertex_faces(f, g, record, face, disjoint);
+      ee_owed = owed_edge_edges(f, g, record, face, disjoint);
+    }
     if ((vf_owed | ee_owed) == 0) return;
 
     Corner corners[2][3];
@@ -216,6 +221,57 @@ class Stages {
     batch.add(first, second, {points[0].t0, points[1].t0, points[2].t0, points[3].t0},
               {points[0].t1, points[1].t1, points[2].t1, points[3].t1});
     if (batch.full()) flush(kind, m_filters, out);
+  }
+
+  // owed_vertex_faces and owed_edge_edges in the common case (feature assignment with
+  // adjacency culling, f and g sharing no vertex), without a branch per pair: the owned
+  // features, and those whose owner shares a vertex with the other face, for which the
+  // first vertex-disjoint face (pair) decides, as in owes_vertex_face / owes_edge_edge.
+  void owed_when_disjoint(Index f, Index g, const FaceFeatures* const (&record)[2],
+                          const Index (&face)[2][3], unsigned& vf_owed, unsigned& ee_owed) const {
+    const auto holds = [](const Index* to_face, Index x) {
+      return static_cast<unsigned>((to_face[0] == x) | (to_face[1] == x) | (to_face[2] == x));
+    };
+    const Index ids[2] = {f, g};
+    unsigned vf_touching = 0;
+    for (int s = 0; s < 2; ++s) {
+      for (int k = 0; k < 3; ++k) {
+        const auto& others = record[s]->corner_owner_others[k];
+        vf_touching |= (holds(face[1 - s], others[0]) | holds(face[1 - s], others[1]))
+                       << (3 * s + k);
+      }
+    }
+    vf_owed = (record[0]->owned & 7u) | ((record[1]->owned & 7u) << 3);
+    for (unsigned bits = vf_touching & ~vf_owed; bits != 0; bits &= bits - 1) {
+      const int slot = std::countr_zero(bits), s = slot / 3, k = slot % 3;
+      if (first_face_disjoint_from(m_mesh, face[s][k], ids[1 - s]) == ids[s]) {
+        vf_owed |= 1u << slot;
+      }
+    }
+    unsigned ee_touching = 0;
+    ee_owed = 0;
+    const unsigned edges_f = record[0]->owned >> 3, edges_g = record[1]->owned >> 3;
+    for (int i = 0; i < 3; ++i) {
+      const Index r1 = record[0]->edge_owner_opposite[i];
+      const Index p1 = face[0][i], q1 = face[0][(i + 1) % 3];
+      for (int j = 0; j < 3; ++j) {
+        const Index r2 = record[1]->edge_owner_opposite[j];
+        const Index p2 = face[1][j], q2 = face[1][(j + 1) % 3];
+        const unsigned bit = 3 * i + j;
+        ee_owed |= ((edges_f >> i) & (edges_g >> j) & 1u) << bit;
+        ee_touching |=
+            static_cast<unsigned>((r1 == p2) | (r1 == q2) | (r1 == r2) | (r2 == p1) | (r2 == q1))
+            << bit;
+      }
+    }
+    for (unsigned bits = ee_touching & ~ee_owed; bits != 0; bits &= bits - 1) {
+      const int slot = std::countr_zero(bits), i = slot / 3, j = slot % 3;
+      const Index ef = record[0]->edges[i], eg = record[1]->edges[j];
+      const auto expected = ef < eg ? std::pair{f, g} : std::pair{g, f};
+      if (first_disjoint_face_pair(m_mesh, std::min(ef, eg), std::max(ef, eg)) == expected) {
+        ee_owed |= 1u << slot;
+      }
+    }
   }
 
   // Bit 3 s + k: the CTP owes the VF pair (corner k of side s, the other side's face).
