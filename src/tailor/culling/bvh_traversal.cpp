@@ -94,13 +94,39 @@ class CandidateTraversal::Walk {
     out.counts.node_pairs_visited += 2;
     const bool overlap1 = a.box(child1_a).overlaps(b.box(child1_b));
     const bool overlap2 = a.box(child2_a).overlaps(b.box(child2_b));
-    if (overlap1 && overlap2 && size_a + size_b > kTaskGrain) {
+    if (size_a + size_b <= kTaskGrain) {
+      if (overlap1) small_pair(a, child1_a, b, child1_b, out);
+      if (overlap2) small_pair(a, child2_a, b, child2_b, out);
+    } else if (overlap1 && overlap2) {
       tbb::parallel_invoke([&] { overlapping_pair(a, child1_a, b, child1_b, m_outputs.local()); },
                            [&] { overlapping_pair(a, child2_a, b, child2_b, m_outputs.local()); });
+    } else if (overlap1) {
+      overlapping_pair(a, child1_a, b, child1_b, out);
+    } else if (overlap2) {
+      overlapping_pair(a, child2_a, b, child2_b, out);
+    }
+  }
+
+  // overlapping_pair below the task grain: the same walk with no task to spawn, so the
+  // recursion is a small function.
+  void small_pair(const MeshBvh& a, Index node_a, const MeshBvh& b, Index node_b,
+                  ThreadOutput& out) {
+    const bool leaf_a = a.is_leaf(node_a), leaf_b = b.is_leaf(node_b);
+    if (leaf_a && leaf_b) {
+      Index f = a.leaf_face(node_a), g = b.leaf_face(node_b);
+      if (m_options.adjacency_culling && share_vertex(f, g)) return;
+      if (f > g) std::swap(f, g);
+      out.push({f, g});
       return;
     }
-    if (overlap1) overlapping_pair(a, child1_a, b, child1_b, out);
-    if (overlap2) overlapping_pair(a, child2_a, b, child2_b, out);
+    const bool split_a = leaf_b || (!leaf_a && a.size(node_a) >= b.size(node_b));
+    const Index child1_a = split_a ? a.left(node_a) : node_a;
+    const Index child2_a = split_a ? a.right(node_a) : node_a;
+    const Index child1_b = split_a ? node_b : b.left(node_b);
+    const Index child2_b = split_a ? node_b : b.right(node_b);
+    out.counts.node_pairs_visited += 2;
+    if (a.box(child1_a).overlaps(b.box(child1_b))) small_pair(a, child1_a, b, child1_b, out);
+    if (a.box(child2_a).overlaps(b.box(child2_b))) small_pair(a, child2_a, b, child2_b, out);
   }
 
  private:
