@@ -410,14 +410,7 @@ nlohmann::json simulation_summary(const Simulation& simulation, bool interrupted
   j["ee_tested"] = {{"mean", static_cast<double>(t.detection.ee_tested) / steps},
                     {"max", t.max_ee}};
   j["detection_totals"] = t.detection;
-  j["detection_config"] = {{"normal_cones", d.normal_cones},
-                           {"contour_test", d.contour_test},
-                           {"adjacency_culling", d.adjacency_culling},
-                           {"feature_assignment", d.feature_assignment},
-                           {"primitive_boxes", d.primitive_boxes},
-                           {"coplanarity_filter", d.coplanarity_filter},
-                           {"radial_view", d.radial_view},
-                           {"threads", d.threads}};
+  j["detection_config"] = d;  // every setting (docs/settings.md)
   j["cloth"] = {{"vertices", simulation.cloth_mesh().num_vertices()},
                 {"faces", simulation.cloth_mesh().num_faces()}};
   j["arm"] = {{"vertices", simulation.arm_mesh().num_vertices()},
