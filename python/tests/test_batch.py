@@ -9,14 +9,13 @@ import signal
 import subprocess
 import sys
 
+from dask import distributed
 import pandas as pd
 import pytest
 
 from conftest import CLI
 import tailor
 from tailor import batch
-
-distributed = pytest.importorskip("dask.distributed")
 
 
 @pytest.fixture(scope="module")
