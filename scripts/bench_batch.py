@@ -40,6 +40,7 @@ def measure(folders, workers, options):
     with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                       dashboard_address=None) as cluster, Client(cluster) as client:
         batch.check(folders[:workers], client=client)  # workers warm (imports)
+        warm = sorted(client.run(peak_rss_mib).values())
         start = time.perf_counter()
         table = batch.check(folders, client=client, **options)
         wall = time.perf_counter() - start
@@ -51,7 +52,7 @@ def measure(folders, workers, options):
         "workers": workers, "wall_s": wall, "sequences_per_min": n / wall * 60,
         "frames_per_s": table["frames"].sum() / wall, "check_ms_per_task": check * 1e3,
         "overhead_ms_per_task": (wall * workers / n - check) * 1e3,
-        "peak_rss_mib_per_worker": peaks,
+        "peak_rss_mib_per_worker": peaks, "warm_rss_mib_per_worker": warm,
     }
 
 
@@ -73,7 +74,8 @@ def main():
               f"{r['sequences_per_min']:.0f} sequences/min, {r['frames_per_s']:.0f} frames/s, "
               f"check {r['check_ms_per_task']:.1f} ms/task, overhead "
               f"{r['overhead_ms_per_task']:.1f} ms/task, peak RSS per worker "
-              f"{', '.join(f'{p:.0f}' for p in r['peak_rss_mib_per_worker'])} MiB")
+              f"{', '.join(f'{p:.0f}' for p in r['peak_rss_mib_per_worker'])} MiB (after the "
+              f"first task: {', '.join(f'{p:.0f}' for p in r['warm_rss_mib_per_worker'])} MiB)")
     if len(results) > 1:
         print(f"speed-up {results[0]['workers']} -> {results[-1]['workers']} workers: "
               f"{results[0]['wall_s'] / results[-1]['wall_s']:.2f}x")
