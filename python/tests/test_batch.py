@@ -94,7 +94,10 @@ def test_bad_sequences_get_their_error_and_the_batch_goes_on(sequences, client, 
     (bad / "cloth_0000.obj").write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
     (bad / "cloth_0001.obj").write_text("v 0 0 0\nv 1 0 nonsense\n")
     missing = str(tmp_path / "missing")
-    table = batch.check([sequences[0], str(bad), missing, sequences[4]], client=client)
+    table, steps = batch.check([sequences[0], str(bad), missing, sequences[4]], client=client,
+                               per_step=True)
+    assert list(steps.columns) == batch.STEP_COLUMNS
+    assert set(steps["sequence"]) == {sequences[0], sequences[4]}
     assert table.loc[0, "error"] == "" and table.loc[3, "error"] == ""
     assert table.loc[3, "collisions"] > 0
     assert "cloth_0001.obj" in table.loc[1, "error"]

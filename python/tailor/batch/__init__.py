@@ -18,7 +18,7 @@ from contextlib import contextmanager
 
 import pandas as pd
 
-__all__ = ["CHECK_COLUMNS", "SIMULATE_COLUMNS", "check", "simulate", "sequence_key", "scene_name"]
+__all__ = ["CHECK_COLUMNS", "STEP_COLUMNS", "SIMULATE_COLUMNS", "check", "simulate", "sequence_key", "scene_name"]
 
 #: Columns of the DataFrame `check` returns, in order.
 CHECK_COLUMNS = [
@@ -26,6 +26,13 @@ CHECK_COLUMNS = [
     "steps_with_contacts", "first_contact_step", "earliest_toi", "earliest_toi_step",
     "frames_with_intersections", "first_intersecting_frame", "vertices", "faces", "seconds",
     "error",
+]
+
+#: Columns of the per-step DataFrame of `check(per_step=True)`.
+STEP_COLUMNS = [
+    "sequence", "step", "vf_collisions", "ee_collisions", "earliest_toi", "end_frame",
+    "end_file", "end_checked", "end_intersections", "detect_ms", "check_ms", "read_wait_ms",
+    "total_ms",
 ]
 
 #: Columns of the DataFrame `simulate` returns, in order.
@@ -188,7 +195,7 @@ def check(sequences, client=None, scheduler=None, per_step=False, *, workers=Non
     table = pd.DataFrame([row for row, _ in results], columns=CHECK_COLUMNS)
     if not per_step:
         return table
-    steps = pd.DataFrame([s for _, rows in results for s in rows])
+    steps = pd.DataFrame([s for _, rows in results for s in rows], columns=STEP_COLUMNS)
     return table, steps
 
 
