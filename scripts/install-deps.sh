@@ -18,6 +18,7 @@ packages=(
   libsuitesparse-dev libopenblas0
   chromium  # the headless browser of tailor view's browser test (tests/view)
   pybind11-dev python3-dev python3-numpy python3-pytest
+  python3-dask python3-distributed python3-pandas  # tailor.batch (python/tailor/batch)
 )
 if [ "${1:-}" = "--fuzz" ]; then
   packages+=(clang libclang-rt-14-dev)

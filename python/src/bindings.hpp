@@ -16,6 +16,7 @@ void bind_ccd(py::module_& m);               ///< ccd_vertex_face, ccd_edge_edge
 void bind_detection_config(py::module_& m);  ///< DetectionConfig (detection_config.cpp)
 void bind_detection(py::module_& m);         ///< detect, SelfCollisionDetector, ... (detection.cpp)
 void bind_sim(py::module_& m);               ///< SceneConfig, Simulation (sim.cpp)
+void bind_sequence(py::module_& m);          ///< check_sequence (sequence.cpp)
 
 /// The configuration `method` names: a preset name (str) or a DetectionConfig; `threads`
 /// (0: all cores) replaces a preset's and, when positive, a DetectionConfig's. Throws

@@ -16,6 +16,7 @@ PYBIND11_MODULE(_tailor, m) {
   python::bind_detection_config(m);
   python::bind_detection(m);
   python::bind_sim(m);
+  python::bind_sequence(m);
   m.def(
       "_input_copies", [] { return python::input_copies(); },
       "How many times the bindings have copied an input array's data (for tests).");

@@ -17,6 +17,7 @@
 #include "json_objects.hpp"
 #include "tailor/geometry/error.hpp"
 #include "tailor/scene/scene.hpp"
+#include "tailor/sim/frame_writer.hpp"
 #include "tailor/sim/simulation.hpp"
 
 namespace tailor::python {
@@ -46,6 +47,31 @@ std::shared_ptr<PySimulation> make_simulation(const SceneConfig& scene, py::hand
 // A Mesh sharing ownership with the simulation that holds it.
 std::shared_ptr<TriangleMesh> mesh_of(const SimulationPtr& owner, const TriangleMesh& mesh) {
   return {owner, const_cast<TriangleMesh*>(&mesh)};
+}
+
+/// Runs `frames` more frames writing what `tailor simulate --out` writes (OBJ frames, steps.jsonl,
+/// summary.json; no pictures) into `out`; returns the summary.
+nlohmann::json run_to_folder(PySimulation& s, const std::filesystem::path& out, int frames) {
+  std::optional<tbb::global_control> limit;
+  if (s.threads > 0) {
+    limit.emplace(tbb::global_control::max_allowed_parallelism,
+                  static_cast<std::size_t>(s.threads));
+  }
+  Simulation& sim = s.simulation;
+  FrameWriter writer(out);
+  const auto& cloth_faces = sim.cloth_mesh().faces();
+  const auto& arm_faces = sim.arm_mesh().faces();
+  writer.write_frame(sim.frame(), sim.cloth_positions(), cloth_faces, sim.arm_positions(),
+                     arm_faces);
+  for (int f = 0; f < frames; ++f) {
+    const auto& records = sim.step_frame();
+    writer.write_frame(sim.frame(), sim.cloth_positions(), cloth_faces, sim.arm_positions(),
+                       arm_faces);
+    writer.append_steps(records);
+  }
+  nlohmann::json summary = simulation_summary(sim, false);
+  writer.write_summary(summary);
+  return summary;
 }
 
 }  // namespace
@@ -102,6 +128,24 @@ void bind_sim(py::module_& m) {
             return to_python(records);
           },
           "Advances one frame; returns its substeps as dicts (as in steps.jsonl).")
+      .def(
+          "run_to_folder",
+          [](PySimulation& s, const std::filesystem::path& out, py::handle frames) {
+            const int count =
+                frames.is_none() ? s.simulation.scene().config().frames : frames.cast<int>();
+            if (count < 0) throw py::value_error("frames must be >= 0");
+            nlohmann::json summary;
+            {
+              py::gil_scoped_release release;
+              summary = run_to_folder(s, out, count);
+            }
+            return to_python(summary);
+          },
+          py::arg("out"), py::arg("frames") = py::none(),
+          "Simulates `frames` more frames (default: the scene's) and writes the run into the "
+          "folder `out` as `tailor simulate --out` does (cloth_NNNN.obj, arm_NNNN.obj from the "
+          "current frame on, steps.jsonl, summary.json; no pictures); returns the summary "
+          "dict. Raises InputError when the folder cannot be written.")
       .def_property_readonly("frame", [](const PySimulation& s) { return s.simulation.frame(); })
       .def_property_readonly("time", [](const PySimulation& s) { return s.simulation.time(); })
       .def_property_readonly(
