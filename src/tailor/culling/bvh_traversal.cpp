@@ -72,38 +72,50 @@ class CandidateTraversal::Walk {
     if (a.box(node_a).overlaps(b.box(node_b))) overlapping_pair(a, node_a, b, node_b, out);
   }
 
+  // The two child pairs of an inner node pair: the larger node is split (the inner one
+  // when the other is a leaf).
+  struct ChildPairs {
+    Index first_a, first_b, second_a, second_b;
+  };
+  [[gnu::always_inline]] static ChildPairs child_pairs(const MeshBvh& a, Index node_a,
+                                                       const MeshBvh& b, Index node_b) {
+    const bool leaf_a = a.is_leaf(node_a), leaf_b = b.is_leaf(node_b);
+    if (leaf_b || (!leaf_a && a.size(node_a) >= b.size(node_b))) {
+      return {a.left(node_a), node_b, a.right(node_a), node_b};
+    }
+    return {node_a, b.left(node_b), node_a, b.right(node_b)};
+  }
+
+  // Two leaves whose boxes overlap: a candidate triangle pair unless adjacency culls it.
+  [[gnu::always_inline]] void leaf_pair(const MeshBvh& a, Index node_a, const MeshBvh& b,
+                                        Index node_b, ThreadOutput& out) {
+    Index f = a.leaf_face(node_a), g = b.leaf_face(node_b);
+    if (m_options.adjacency_culling && share_vertex(f, g)) return;
+    if (f > g) std::swap(f, g);
+    out.push({f, g});
+  }
+
   // A node pair whose boxes overlap: a candidate triangle pair at two leaves, otherwise
-  // the larger node is split and both child pairs are tested here, so that the many pairs
-  // whose boxes do not overlap cost no call.
+  // both child pairs are tested here, so that the many pairs whose boxes do not overlap
+  // cost no call. Below the task grain the walk goes on in small_pair.
   void overlapping_pair(const MeshBvh& a, Index node_a, const MeshBvh& b, Index node_b,
                         ThreadOutput& out) {
-    const bool leaf_a = a.is_leaf(node_a), leaf_b = b.is_leaf(node_b);
-    if (leaf_a && leaf_b) {
-      Index f = a.leaf_face(node_a), g = b.leaf_face(node_b);
-      if (m_options.adjacency_culling && share_vertex(f, g)) return;
-      if (f > g) std::swap(f, g);
-      out.push({f, g});
-      return;
-    }
-    const Index size_a = a.size(node_a), size_b = b.size(node_b);
-    const bool split_a = leaf_b || (!leaf_a && size_a >= size_b);
-    const Index child1_a = split_a ? a.left(node_a) : node_a;
-    const Index child2_a = split_a ? a.right(node_a) : node_a;
-    const Index child1_b = split_a ? node_b : b.left(node_b);
-    const Index child2_b = split_a ? node_b : b.right(node_b);
+    if (a.is_leaf(node_a) && b.is_leaf(node_b)) return leaf_pair(a, node_a, b, node_b, out);
+    const ChildPairs c = child_pairs(a, node_a, b, node_b);
     out.counts.node_pairs_visited += 2;
-    const bool overlap1 = a.box(child1_a).overlaps(b.box(child1_b));
-    const bool overlap2 = a.box(child2_a).overlaps(b.box(child2_b));
-    if (size_a + size_b <= kTaskGrain) {
-      if (overlap1) small_pair(a, child1_a, b, child1_b, out);
-      if (overlap2) small_pair(a, child2_a, b, child2_b, out);
+    const bool overlap1 = a.box(c.first_a).overlaps(b.box(c.first_b));
+    const bool overlap2 = a.box(c.second_a).overlaps(b.box(c.second_b));
+    if (a.size(node_a) + b.size(node_b) <= kTaskGrain) {
+      if (overlap1) small_pair(a, c.first_a, b, c.first_b, out);
+      if (overlap2) small_pair(a, c.second_a, b, c.second_b, out);
     } else if (overlap1 && overlap2) {
-      tbb::parallel_invoke([&] { overlapping_pair(a, child1_a, b, child1_b, m_outputs.local()); },
-                           [&] { overlapping_pair(a, child2_a, b, child2_b, m_outputs.local()); });
+      tbb::parallel_invoke(
+          [&] { overlapping_pair(a, c.first_a, b, c.first_b, m_outputs.local()); },
+          [&] { overlapping_pair(a, c.second_a, b, c.second_b, m_outputs.local()); });
     } else if (overlap1) {
-      overlapping_pair(a, child1_a, b, child1_b, out);
+      overlapping_pair(a, c.first_a, b, c.first_b, out);
     } else if (overlap2) {
-      overlapping_pair(a, child2_a, b, child2_b, out);
+      overlapping_pair(a, c.second_a, b, c.second_b, out);
     }
   }
 
@@ -111,22 +123,13 @@ class CandidateTraversal::Walk {
   // recursion is a small function.
   void small_pair(const MeshBvh& a, Index node_a, const MeshBvh& b, Index node_b,
                   ThreadOutput& out) {
-    const bool leaf_a = a.is_leaf(node_a), leaf_b = b.is_leaf(node_b);
-    if (leaf_a && leaf_b) {
-      Index f = a.leaf_face(node_a), g = b.leaf_face(node_b);
-      if (m_options.adjacency_culling && share_vertex(f, g)) return;
-      if (f > g) std::swap(f, g);
-      out.push({f, g});
-      return;
-    }
-    const bool split_a = leaf_b || (!leaf_a && a.size(node_a) >= b.size(node_b));
-    const Index child1_a = split_a ? a.left(node_a) : node_a;
-    const Index child2_a = split_a ? a.right(node_a) : node_a;
-    const Index child1_b = split_a ? node_b : b.left(node_b);
-    const Index child2_b = split_a ? node_b : b.right(node_b);
+    if (a.is_leaf(node_a) && b.is_leaf(node_b)) return leaf_pair(a, node_a, b, node_b, out);
+    const ChildPairs c = child_pairs(a, node_a, b, node_b);
     out.counts.node_pairs_visited += 2;
-    if (a.box(child1_a).overlaps(b.box(child1_b))) small_pair(a, child1_a, b, child1_b, out);
-    if (a.box(child2_a).overlaps(b.box(child2_b))) small_pair(a, child2_a, b, child2_b, out);
+    if (a.box(c.first_a).overlaps(b.box(c.first_b))) small_pair(a, c.first_a, b, c.first_b, out);
+    if (a.box(c.second_a).overlaps(b.box(c.second_b))) {
+      small_pair(a, c.second_a, b, c.second_b, out);
+    }
   }
 
  private:
