@@ -30,6 +30,15 @@ MeshBvh::MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector
     faces.resize(static_cast<std::size_t>(mesh.num_faces()));
     std::iota(faces.begin(), faces.end(), 0);
   }
+  build_nodes(mesh, x_build, std::move(faces));
+  const Roles roles = mark_roles();
+  assign_slots(mesh, roles);
+  index_tasks(roles);
+  refit(x_build, x_build, false);
+}
+
+void MeshBvh::build_nodes(const TriangleMesh& mesh, const Positions& x_build,
+                          std::vector<Index> faces) {
   std::vector<Vec3> centers(faces.size());
   for (std::size_t p = 0; p < faces.size(); ++p) {
     const auto v = mesh.faces().row(faces[p]);
@@ -39,8 +48,7 @@ MeshBvh::MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector
         x_build.row(v[0]).array().max(x_build.row(v[1]).array()).max(x_build.row(v[2]).array());
     centers[p] = (0.5 * (low + high)).matrix();
   }
-  BvhLayout layout = build_surface_layout(mesh, faces, centers);
-  centers = {};
+  const BvhLayout layout = build_surface_layout(mesh, faces, centers);
   const Index n = layout.num_nodes();
   m_nodes.resize(static_cast<std::size_t>(n));
   for (Index node = 0; node < n; ++node) {
@@ -48,18 +56,19 @@ MeshBvh::MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector
     m_nodes[node].right_or_face =
         layout.is_leaf(node) ? faces[layout.right[node]] : layout.right[node];
   }
-  layout = {};
-  faces = std::vector<Index>();  // the leaves keep their faces
+}
 
-  // Roles, top-down: merge nodes (>= kGroupFaces faces), group roots (the largest subtrees
+MeshBvh::Roles MeshBvh::mark_roles() {
+  // Top-down: merge nodes (>= kGroupFaces faces), group roots (the largest subtrees
   // below), task roots (the largest subtrees of at most kParallelGrain faces).
-  std::vector<char> group_root(static_cast<std::size_t>(n), 0), task_root(group_root);
+  const auto n = static_cast<std::size_t>(num_nodes());
+  Roles roles{std::vector<char>(n, 0), std::vector<char>(n, 0)};
   std::vector<Index> stack{0};
   while (!stack.empty()) {
     const Index node = stack.back();
     stack.pop_back();
     if (size(node) < kGroupFaces) {
-      group_root[node] = 1;
+      roles.group_root[node] = 1;
     } else {
       stack.push_back(right(node));
       stack.push_back(left(node));
@@ -70,7 +79,7 @@ MeshBvh::MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector
     const Index node = stack.back();
     stack.pop_back();
     if (size(node) <= kParallelGrain) {
-      task_root[node] = 1;
+      roles.task_root[node] = 1;
     } else {
       m_top_merges.push_back(node);
       stack.push_back(right(node));
@@ -78,8 +87,12 @@ MeshBvh::MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector
     }
   }
   std::sort(m_top_merges.rbegin(), m_top_merges.rend());
+  return roles;
+}
 
+void MeshBvh::assign_slots(const TriangleMesh& mesh, const Roles& roles) {
   // Slots, groups, merge nodes and the corners in leaf order (= increasing id).
+  const Index n = num_nodes();
   const std::size_t words = (static_cast<std::size_t>(n) + 63) / 64;
   m_mask_bits.assign(words, 0);
   m_masks_before_word.assign(words, 0);
@@ -88,13 +101,13 @@ MeshBvh::MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector
   for (Index node = 0; node < n; ++node) {
     const std::size_t word = static_cast<std::size_t>(node) >> 6;
     if ((node & 63) == 0) m_masks_before_word[word] = slots;
-    const bool merges = !group_root[node] && size(node) >= kGroupFaces;
+    const bool merges = !roles.group_root[node] && size(node) >= kGroupFaces;
     const Index slot = slots;
-    if (group_root[node] || merges) {
+    if (roles.group_root[node] || merges) {
       m_mask_bits[word] |= std::uint64_t{1} << (node & 63);
       ++slots;
     }
-    if (group_root[node]) {
+    if (roles.group_root[node]) {
       std::uint32_t leaf_bits = 0;
       for (Index member = node; member < node + 2 * size(node) - 1; ++member) {
         if (is_leaf(member)) leaf_bits |= std::uint32_t{1} << (member - node);
@@ -114,27 +127,27 @@ MeshBvh::MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector
     merge.left_slot = mask_index(left(merge.node));
     merge.right_slot = mask_index(right(merge.node));
   }
+}
+
+void MeshBvh::index_tasks(const Roles& roles) {
   const auto merge_at = [&](Index id) {
     return static_cast<Index>(std::lower_bound(m_merges.begin(), m_merges.end(), id,
                                                [](const Merge& m, Index x) { return m.node < x; }) -
                               m_merges.begin());
   };
+  const auto group_at = [&](Index id) {
+    return static_cast<Index>(std::lower_bound(m_groups.begin(), m_groups.end(), id,
+                                               [](const Group& g, Index x) { return g.root < x; }) -
+                              m_groups.begin());
+  };
   for (Index& node : m_top_merges) node = merge_at(node);  // node ids to positions
-
   // A task's subtree is the id range [root, root + 2·size - 1): its groups and merge
   // nodes are contiguous in the sorted lists.
-  for (Index node = 0; node < n; ++node) {
-    if (!task_root[node]) continue;
+  for (Index node = 0; node < num_nodes(); ++node) {
+    if (!roles.task_root[node]) continue;
     const Index end = node + 2 * size(node) - 1;
-    const auto group_at = [&](Index id) {
-      return static_cast<Index>(
-          std::lower_bound(m_groups.begin(), m_groups.end(), id,
-                           [](const Group& g, Index x) { return g.root < x; }) -
-          m_groups.begin());
-    };
     m_tasks.push_back({group_at(node), group_at(end), merge_at(node), merge_at(end)});
   }
-  refit(x_build, x_build, false);
 }
 
 void MeshBvh::refit(const Positions& x0, const Positions& x1, bool with_directions) {

@@ -90,6 +90,18 @@ class MeshBvh {
   Index num_masks() const { return static_cast<Index>(m_masks.size()); }
 
  private:
+  // Which nodes root a group (refitted from its faces) and which a parallel task.
+  struct Roles {
+    std::vector<char> group_root, task_root;
+  };
+  // The construction, in order: the node records from the surface layout; the roles; the
+  // mask slots, groups, merge nodes and leaf corners; the tasks' ranges of groups and
+  // merge nodes.
+  void build_nodes(const TriangleMesh& mesh, const Positions& x_build, std::vector<Index> faces);
+  Roles mark_roles();
+  void assign_slots(const TriangleMesh& mesh, const Roles& roles);
+  void index_tasks(const Roles& roles);
+
   static constexpr Index kGroupFaces = 16;
   static_assert(kGroupFaces <= MovingTriangleBatch::kCapacity + 1);
   static_assert(2 * kGroupFaces - 3 <= 32);

@@ -35,17 +35,24 @@ Index find_root(std::vector<Index>& parent, Index v) {
 
 TriangleMesh::TriangleMesh(Index num_vertices, FaceArray faces)
     : m_num_vertices(num_vertices), m_faces(std::move(faces)) {
-  if (num_vertices < 0) {
-    throw InputError(fmt::format("mesh has a negative vertex count ({})", num_vertices));
+  validate_faces();  // errors first, so nothing below sees a bad index
+  build_edges(sorted_sides());
+  build_vertex_faces();
+  build_edge_ends();
+  record_warnings();
+  build_boundary_loops();
+  label_components();
+}
+
+void TriangleMesh::validate_faces() const {
+  if (m_num_vertices < 0) {
+    throw InputError(fmt::format("mesh has a negative vertex count ({})", m_num_vertices));
   }
   if (m_faces.rows() > std::numeric_limits<Index>::max() / 3) {
     throw InputError(fmt::format("mesh has too many faces ({})", m_faces.rows()));
   }
-  const Index nf = num_faces();
   const Index nv = m_num_vertices;
-
-  // Validation errors first, so nothing below sees a bad index.
-  for (Index f = 0; f < nf; ++f) {
+  for (Index f = 0; f < num_faces(); ++f) {
     for (int i = 0; i < 3; ++i) {
       const Index v = m_faces(f, i);
       if (v < 0 || v >= nv) {
@@ -59,34 +66,35 @@ TriangleMesh::TriangleMesh(Index num_vertices, FaceArray faces)
                                    m_faces(f, 1), m_faces(f, 2)));
     }
   }
+}
 
-  // --- Edges: bucket the 3F face sides by their larger vertex, then order each (small)
-  // bucket by the smaller vertex. Slots of one side are s = 3f + i.
-  const std::size_t num_slots = 3 * static_cast<std::size_t>(nf);
-  std::vector<Index> bucket_offsets(static_cast<std::size_t>(nv) + 1, 0);
+TriangleMesh::SortedSides TriangleMesh::sorted_sides() const {
+  // Bucket the 3F face sides by their larger vertex, then order each (small) bucket by the
+  // smaller vertex. Slots of one side are s = 3f + i.
+  const Index nf = num_faces(), nv = m_num_vertices;
+  SortedSides sides;
+  sides.bucket_offsets.assign(static_cast<std::size_t>(nv) + 1, 0);
   for (Index f = 0; f < nf; ++f) {
     for (int i = 0; i < 3; ++i) {
       const Index b = std::max(m_faces(f, i), m_faces(f, (i + 1) % 3));
-      ++bucket_offsets[b + 1];
+      ++sides.bucket_offsets[b + 1];
     }
   }
-  counts_to_offsets(bucket_offsets);
+  counts_to_offsets(sides.bucket_offsets);
   // keys[k] = (smaller vertex << 32) | slot: sorting a bucket's keys orders it by the
   // smaller vertex, then by slot (hence by face), with contiguous memory access only.
-  std::vector<std::uint64_t> keys(num_slots);
-  {
-    std::vector<Index> cursor(bucket_offsets.begin(), bucket_offsets.end() - 1);
-    for (Index f = 0; f < nf; ++f) {
-      for (int i = 0; i < 3; ++i) {
-        const Index u = m_faces(f, i), w = m_faces(f, (i + 1) % 3);
-        const auto lo = static_cast<std::uint64_t>(std::min(u, w));
-        keys[cursor[std::max(u, w)]++] = (lo << 32) | static_cast<std::uint64_t>(3 * f + i);
-      }
+  sides.keys.resize(3 * static_cast<std::size_t>(nf));
+  std::vector<Index> cursor(sides.bucket_offsets.begin(), sides.bucket_offsets.end() - 1);
+  for (Index f = 0; f < nf; ++f) {
+    for (int i = 0; i < 3; ++i) {
+      const Index u = m_faces(f, i), w = m_faces(f, (i + 1) % 3);
+      const auto lo = static_cast<std::uint64_t>(std::min(u, w));
+      sides.keys[cursor[std::max(u, w)]++] = (lo << 32) | static_cast<std::uint64_t>(3 * f + i);
     }
   }
   for (Index b = 0; b < nv; ++b) {
-    const auto first = keys.begin() + bucket_offsets[b];
-    const auto last = keys.begin() + bucket_offsets[b + 1];
+    const auto first = sides.keys.begin() + sides.bucket_offsets[b];
+    const auto last = sides.keys.begin() + sides.bucket_offsets[b + 1];
     if (last - first > 32) {
       std::sort(first, last);
     } else {
@@ -102,7 +110,11 @@ TriangleMesh::TriangleMesh(Index num_vertices, FaceArray faces)
       }
     }
   }
+  return sides;
+}
 
+void TriangleMesh::build_edges(const SortedSides& sides) {
+  const std::size_t num_slots = sides.keys.size();
   m_face_edges.assign(num_slots, -1);
   m_edge_face_ids.resize(num_slots);
   m_edge_face_offsets.clear();
@@ -110,11 +122,11 @@ TriangleMesh::TriangleMesh(Index num_vertices, FaceArray faces)
   std::vector<Index> edge_a, edge_b;
   edge_a.reserve(num_slots / 2 + 1);
   edge_b.reserve(num_slots / 2 + 1);
-  for (Index b = 0; b < nv; ++b) {
+  for (Index b = 0; b < m_num_vertices; ++b) {
     Index prev_a = -1;
-    for (Index k = bucket_offsets[b]; k < bucket_offsets[b + 1]; ++k) {
-      const Index a = static_cast<Index>(keys[k] >> 32);
-      const Index slot = static_cast<Index>(keys[k] & 0xffffffffu);
+    for (Index k = sides.bucket_offsets[b]; k < sides.bucket_offsets[b + 1]; ++k) {
+      const Index a = static_cast<Index>(sides.keys[k] >> 32);
+      const Index slot = static_cast<Index>(sides.keys[k] & 0xffffffffu);
       if (a != prev_a) {
         m_edge_face_offsets.push_back(k);
         edge_a.push_back(a);
@@ -132,37 +144,38 @@ TriangleMesh::TriangleMesh(Index num_vertices, FaceArray faces)
     m_edges(e, 0) = edge_a[e];
     m_edges(e, 1) = edge_b[e];
   }
-  keys.clear();
-  keys.shrink_to_fit();
+}
 
-  // --- Vertex -> faces (faces visited in order, so each list is increasing).
-  m_vertex_face_offsets.assign(static_cast<std::size_t>(nv) + 1, 0);
-  for (Index f = 0; f < nf; ++f) {
+void TriangleMesh::build_vertex_faces() {
+  // Faces visited in order, so each list is increasing.
+  m_vertex_face_offsets.assign(static_cast<std::size_t>(m_num_vertices) + 1, 0);
+  for (Index f = 0; f < num_faces(); ++f) {
     for (int i = 0; i < 3; ++i) ++m_vertex_face_offsets[m_faces(f, i) + 1];
   }
   counts_to_offsets(m_vertex_face_offsets);
-  m_vertex_face_ids.resize(num_slots);
-  {
-    std::vector<Index> cursor(m_vertex_face_offsets.begin(), m_vertex_face_offsets.end() - 1);
-    for (Index f = 0; f < nf; ++f) {
-      for (int i = 0; i < 3; ++i) m_vertex_face_ids[cursor[m_faces(f, i)]++] = f;
-    }
+  m_vertex_face_ids.resize(3 * static_cast<std::size_t>(num_faces()));
+  std::vector<Index> cursor(m_vertex_face_offsets.begin(), m_vertex_face_offsets.end() - 1);
+  for (Index f = 0; f < num_faces(); ++f) {
+    for (int i = 0; i < 3; ++i) m_vertex_face_ids[cursor[m_faces(f, i)]++] = f;
   }
+}
 
-  // --- Edges by their larger vertex: edges are sorted by (b, a), so the edges (a, b) of
-  // one b are a contiguous, a-sorted range. (A full vertex -> edges table took 14 bytes
-  // per triangle, which the detector never reads; vertex_edges() assembles a list.)
-  m_edge_end_offsets.assign(static_cast<std::size_t>(nv) + 1, 0);
-  for (Index e = 0; e < ne; ++e) ++m_edge_end_offsets[m_edges(e, 1) + 1];
+void TriangleMesh::build_edge_ends() {
+  // Edges are sorted by (b, a), so the edges (a, b) of one b are a contiguous, a-sorted
+  // range. (A full vertex -> edges table took 14 bytes per triangle, which the detector
+  // never reads; vertex_edges() assembles a list.)
+  m_edge_end_offsets.assign(static_cast<std::size_t>(m_num_vertices) + 1, 0);
+  for (Index e = 0; e < num_edges(); ++e) ++m_edge_end_offsets[m_edges(e, 1) + 1];
   counts_to_offsets(m_edge_end_offsets);
+}
 
-  // --- Validation warnings.
-  for (Index e = 0; e < ne; ++e) {
+void TriangleMesh::record_warnings() {
+  for (Index e = 0; e < num_edges(); ++e) {
     if (m_edge_face_offsets[e + 1] - m_edge_face_offsets[e] > 2) {
       m_validation.non_manifold_edges.push_back(e);
     }
   }
-  for (Index v = 0; v < nv; ++v) {
+  for (Index v = 0; v < m_num_vertices; ++v) {
     if (m_vertex_face_offsets[v + 1] == m_vertex_face_offsets[v]) {
       m_validation.unreferenced_vertices.push_back(v);
     }
@@ -177,94 +190,104 @@ TriangleMesh::TriangleMesh(Index num_vertices, FaceArray faces)
                  m_validation.unreferenced_vertices.size(),
                  m_validation.unreferenced_vertices.front());
   }
+}
 
-  // --- Boundary loops. Each boundary edge carries the direction of its face's side; the
-  // walk prefers continuing along that direction but accepts any unused boundary edge at
-  // the current vertex, so inconsistent orientations and pinched (non-manifold) vertices
-  // still terminate: every boundary edge is consumed exactly once.
-  std::vector<Index> boundary_from(ne, -1), boundary_to(ne, -1);
-  std::vector<Index> vb_offsets(static_cast<std::size_t>(nv) + 1, 0);
-  Index num_boundary = 0;
+TriangleMesh::BoundaryEdges TriangleMesh::boundary_edges() const {
+  // Each boundary edge carries the direction of its face's side, and every vertex lists
+  // its boundary edges (CSR).
+  const Index ne = num_edges();
+  BoundaryEdges boundary{std::vector<Index>(ne, -1),
+                         std::vector<Index>(ne, -1),
+                         std::vector<Index>(static_cast<std::size_t>(m_num_vertices) + 1, 0),
+                         {}};
   for (Index e = 0; e < ne; ++e) {
     if (m_edge_face_offsets[e + 1] - m_edge_face_offsets[e] != 1) continue;
     const Index f = m_edge_face_ids[m_edge_face_offsets[e]];
     for (int i = 0; i < 3; ++i) {
       if (m_face_edges[3 * f + i] == e) {
-        boundary_from[e] = m_faces(f, i);
-        boundary_to[e] = m_faces(f, (i + 1) % 3);
+        boundary.from[e] = m_faces(f, i);
+        boundary.to[e] = m_faces(f, (i + 1) % 3);
       }
     }
-    ++vb_offsets[m_edges(e, 0) + 1];
-    ++vb_offsets[m_edges(e, 1) + 1];
-    ++num_boundary;
+    ++boundary.vertex_offsets[m_edges(e, 0) + 1];
+    ++boundary.vertex_offsets[m_edges(e, 1) + 1];
   }
-  if (num_boundary > 0) {
-    counts_to_offsets(vb_offsets);
-    std::vector<Index> vb_ids(vb_offsets.back());
-    {
-      std::vector<Index> cursor(vb_offsets.begin(), vb_offsets.end() - 1);
-      for (Index e = 0; e < ne; ++e) {
-        if (boundary_from[e] < 0) continue;
-        vb_ids[cursor[m_edges(e, 0)]++] = e;
-        vb_ids[cursor[m_edges(e, 1)]++] = e;
-      }
-    }
-    std::vector<char> used(ne, 0);
-    // Next unused boundary edge at `v`, preferring one that leaves `v` (forward walk) or
-    // arrives at `v` (backward walk) along its face's orientation; -1 if none is left.
-    auto pick = [&](Index v, bool forward) {
-      Index chosen = -1;
-      for (Index k = vb_offsets[v]; k < vb_offsets[v + 1]; ++k) {
-        const Index e = vb_ids[k];
-        if (used[e]) continue;
-        if ((forward ? boundary_from[e] : boundary_to[e]) == v) return e;
-        if (chosen < 0) chosen = e;
-      }
-      return chosen;
-    };
-    auto other_end = [&](Index e, Index v) {
-      return m_edges(e, 0) == v ? m_edges(e, 1) : m_edges(e, 0);
-    };
-    std::vector<Index> backward;
-    m_loop_vertices.reserve(num_boundary);
-    for (Index start_edge = 0; start_edge < ne; ++start_edge) {
-      if (boundary_from[start_edge] < 0 || used[start_edge]) continue;
-      used[start_edge] = 1;
-      const Index start = boundary_from[start_edge];
-      const std::size_t loop_begin = m_loop_vertices.size();
-      m_loop_vertices.push_back(start);
-      Index current = boundary_to[start_edge];
-      bool closed = false;
-      for (;;) {
-        if (current == start) {
-          closed = true;
-          break;
-        }
-        m_loop_vertices.push_back(current);
-        const Index e = pick(current, true);
-        if (e < 0) break;
-        used[e] = 1;
-        current = other_end(e, current);
-      }
-      if (!closed) {
-        // An open chain (pinched or inconsistently oriented boundary): extend it backwards
-        // from its start so that it is as long as possible.
-        backward.clear();
-        Index back = start;
-        for (Index e = pick(back, false); e >= 0; e = pick(back, false)) {
-          used[e] = 1;
-          back = other_end(e, back);
-          if (back == current) break;  // reached the chain's other end: now closed
-          backward.push_back(back);
-        }
-        m_loop_vertices.insert(m_loop_vertices.begin() + static_cast<std::ptrdiff_t>(loop_begin),
-                               backward.rbegin(), backward.rend());
-      }
-      m_loop_offsets.push_back(static_cast<Index>(m_loop_vertices.size()));
-    }
+  counts_to_offsets(boundary.vertex_offsets);
+  boundary.vertex_edges.resize(static_cast<std::size_t>(boundary.vertex_offsets.back()));
+  std::vector<Index> cursor(boundary.vertex_offsets.begin(), boundary.vertex_offsets.end() - 1);
+  for (Index e = 0; e < ne; ++e) {
+    if (boundary.from[e] < 0) continue;
+    boundary.vertex_edges[cursor[m_edges(e, 0)]++] = e;
+    boundary.vertex_edges[cursor[m_edges(e, 1)]++] = e;
   }
+  return boundary;
+}
 
-  // --- Components: faces joined by shared vertices.
+void TriangleMesh::build_boundary_loops() {
+  // The walk prefers continuing along each boundary edge's direction but accepts any
+  // unused boundary edge at the current vertex, so inconsistent orientations and pinched
+  // (non-manifold) vertices still terminate: every boundary edge is consumed exactly once.
+  const BoundaryEdges boundary = boundary_edges();
+  if (boundary.vertex_edges.empty()) return;
+  const Index ne = num_edges();
+  std::vector<char> used(ne, 0);
+  // Next unused boundary edge at `v`, preferring one that leaves `v` (forward walk) or
+  // arrives at `v` (backward walk) along its face's orientation; -1 if none is left.
+  auto pick = [&](Index v, bool forward) {
+    Index chosen = -1;
+    for (Index k = boundary.vertex_offsets[v]; k < boundary.vertex_offsets[v + 1]; ++k) {
+      const Index e = boundary.vertex_edges[k];
+      if (used[e]) continue;
+      if ((forward ? boundary.from[e] : boundary.to[e]) == v) return e;
+      if (chosen < 0) chosen = e;
+    }
+    return chosen;
+  };
+  auto other_end = [&](Index e, Index v) {
+    return m_edges(e, 0) == v ? m_edges(e, 1) : m_edges(e, 0);
+  };
+  std::vector<Index> backward;
+  m_loop_vertices.reserve(boundary.vertex_edges.size() / 2);
+  for (Index start_edge = 0; start_edge < ne; ++start_edge) {
+    if (boundary.from[start_edge] < 0 || used[start_edge]) continue;
+    used[start_edge] = 1;
+    const Index start = boundary.from[start_edge];
+    const std::size_t loop_begin = m_loop_vertices.size();
+    m_loop_vertices.push_back(start);
+    Index current = boundary.to[start_edge];
+    bool closed = false;
+    for (;;) {
+      if (current == start) {
+        closed = true;
+        break;
+      }
+      m_loop_vertices.push_back(current);
+      const Index e = pick(current, true);
+      if (e < 0) break;
+      used[e] = 1;
+      current = other_end(e, current);
+    }
+    if (!closed) {
+      // An open chain (pinched or inconsistently oriented boundary): extend it backwards
+      // from its start so that it is as long as possible.
+      backward.clear();
+      Index back = start;
+      for (Index e = pick(back, false); e >= 0; e = pick(back, false)) {
+        used[e] = 1;
+        back = other_end(e, back);
+        if (back == current) break;  // reached the chain's other end: now closed
+        backward.push_back(back);
+      }
+      m_loop_vertices.insert(m_loop_vertices.begin() + static_cast<std::ptrdiff_t>(loop_begin),
+                             backward.rbegin(), backward.rend());
+    }
+    m_loop_offsets.push_back(static_cast<Index>(m_loop_vertices.size()));
+  }
+}
+
+void TriangleMesh::label_components() {
+  // Faces joined by shared vertices.
+  const Index nf = num_faces(), nv = m_num_vertices;
   std::vector<Index> parent(nv);
   std::iota(parent.begin(), parent.end(), 0);
   for (Index f = 0; f < nf; ++f) {

@@ -3,6 +3,7 @@
 /// Connectivity of a triangle mesh: edges, adjacency (flat CSR arrays), boundary, components.
 
 #include <array>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -86,6 +87,29 @@ class TriangleMesh {
   const MeshValidation& validation() const { return m_validation; }
 
  private:
+  // The 3F face sides bucketed by their larger vertex, each bucket sorted by the smaller
+  // vertex: keys (smaller vertex << 32 | 3f + i) and the buckets' offsets.
+  struct SortedSides {
+    std::vector<Index> bucket_offsets;
+    std::vector<std::uint64_t> keys;
+  };
+  // Boundary edges: each with its face's direction (from, to; -1 inside), and the
+  // boundary edges of every vertex (CSR).
+  struct BoundaryEdges {
+    std::vector<Index> from, to;
+    std::vector<Index> vertex_offsets, vertex_edges;
+  };
+  // The construction, in order (each step reads what the ones before it built).
+  void validate_faces() const;
+  SortedSides sorted_sides() const;
+  void build_edges(const SortedSides& sides);
+  void build_vertex_faces();
+  void build_edge_ends();
+  void record_warnings();
+  BoundaryEdges boundary_edges() const;
+  void build_boundary_loops();
+  void label_components();
+
   Index m_num_vertices = 0;
   FaceArray m_faces;
   EdgeArray m_edges;
