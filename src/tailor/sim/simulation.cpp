@@ -226,22 +226,7 @@ struct Simulation::Impl {
     record.strain_ms = milliseconds_since(strain_start);
     record.forces_solve_ms = milliseconds_since(step_start);
 
-    if (contact) {
-      // Strain limiting interleaved with the contact passes (see ContactSolver).
-      contact->set_position_filter([&](Positions& x_end) {
-        const StrainLimitStats again = limiter.apply(x_end, kContactStrainSweeps);
-        record.strain_limit.sweeps += again.sweeps;
-        record.strain_limit.corrections += again.corrections;
-        record.strain_limit.max_strain_after = again.max_strain_after;
-      });
-      KinematicObstacle obstacle;
-      obstacle.mesh = &arm.mesh();
-      obstacle.x0 = std::move(y);
-      obstacle.x1 = y1;
-      record.contact = contact->resolve(x, x1, obstacle, h);
-      record.detection_ms = record.contact.detection_ms;
-      record.response_ms = record.contact.response_ms;
-    }
+    if (contact) resolve_contacts(x1, y1, h, record);
     v = (x1 - x) / h;
     x = std::move(x1);
     const StrainSummary strain = strain_summary(*scene.sleeve().mesh, scene.sleeve().rest, x);
@@ -252,18 +237,42 @@ struct Simulation::Impl {
 
     if (options.check_intersections ||
         (options.check_frames && substep_index + 1 == config.substeps)) {
-      const auto check_start = SteadyClock::now();
-      const IntersectionReport report =
-          check_intersections(*scene.sleeve().mesh, x, &arm.mesh(), &y);
-      record.checked = true;
-      record.self_intersections = report.self_intersections + report.adjacent_intersections;
-      record.obstacle_intersections = report.obstacle_intersections;
-      record.check_ms = milliseconds_since(check_start);
+      check_step(record);
     }
     record.step_ms = milliseconds_since(step_start);
     ++step_index;
     accumulate(record);
     records.push_back(std::move(record));
+  }
+
+  // Self and arm contacts of the step from x to x1 (the arm from y to y1), with strain
+  // limiting interleaved with the contact passes (see ContactSolver).
+  void resolve_contacts(Positions& x1, const Positions& y1, double h, StepRecord& record) {
+    contact->set_position_filter([&](Positions& x_end) {
+      const StrainLimitStats again = limiter.apply(x_end, kContactStrainSweeps);
+      record.strain_limit.sweeps += again.sweeps;
+      record.strain_limit.corrections += again.corrections;
+      record.strain_limit.max_strain_after = again.max_strain_after;
+    });
+    KinematicObstacle obstacle;
+    obstacle.mesh = &scene.arm().mesh();
+    obstacle.x0 = std::move(y);
+    obstacle.x1 = y1;
+    record.contact = contact->resolve(x, x1, obstacle, h);
+    record.detection_ms = record.contact.detection_ms;
+    record.response_ms = record.contact.response_ms;
+  }
+
+  // The exact static intersection check of the cloth (and against the arm) at the end of
+  // the step.
+  void check_step(StepRecord& record) const {
+    const auto check_start = SteadyClock::now();
+    const IntersectionReport report =
+        check_intersections(*scene.sleeve().mesh, x, &scene.arm().mesh(), &y);
+    record.checked = true;
+    record.self_intersections = report.self_intersections + report.adjacent_intersections;
+    record.obstacle_intersections = report.obstacle_intersections;
+    record.check_ms = milliseconds_since(check_start);
   }
 
   void accumulate(const StepRecord& r) {
