@@ -53,10 +53,11 @@ TEST(ArmCollision, ClearanceCacheDecidesExactlyAsTheQueries) {
       cached.row(i) += step * d;
     }
     std::vector<Index> ids_plain, ids_cached;
-    const ArmCollisionStats a =
-        project_out_of_arm(arm, s0, s1, x0, plain, margin, 0.0, {}, &ids_plain);
+    const ArmCollisionStats a = project_out_of_arm({arm, s0, s1}, x0, plain,
+                                                   {.margin = margin, .projected_ids = &ids_plain});
     const ArmCollisionStats b =
-        project_out_of_arm(arm, s0, s1, x0, cached, margin, 0.0, {}, &ids_cached, &cache);
+        project_out_of_arm({arm, s0, s1}, x0, cached,
+                           {.margin = margin, .projected_ids = &ids_cached, .cache = &cache});
     ASSERT_EQ(a.projected, b.projected) << "round " << round;
     ASSERT_EQ(ids_plain, ids_cached) << "round " << round;
     ASSERT_TRUE(plain == cached) << "round " << round;  // bit-identical positions
@@ -78,10 +79,10 @@ TEST(ArmCollision, ProjectingAProjectedStateAgainMovesNothing) {
   Positions x = points_around_arm(s, n, 0.06, rng);
   const double margin = 0.003;
   const Positions x0 = x;
-  const ArmCollisionStats first = project_out_of_arm(arm, s, s, x0, x, margin, 0.0, {});
+  const ArmCollisionStats first = project_out_of_arm({arm, s, s}, x0, x, {.margin = margin});
   ASSERT_GT(first.projected, n / 4);  // most points started inside the arm
   const Positions projected = x;
-  const ArmCollisionStats again = project_out_of_arm(arm, s, s, x0, x, margin, 0.0, {});
+  const ArmCollisionStats again = project_out_of_arm({arm, s, s}, x0, x, {.margin = margin});
   EXPECT_EQ(again.projected, 0);
   EXPECT_TRUE(x == projected);
 }

@@ -40,13 +40,15 @@ double face_clearance_margin(double min_arm_radius, double longest_rest_edge, do
   return std::max(clearance, std::sqrt((r + clearance) * (r + clearance) + rho * rho) - r);
 }
 
-std::vector<ContactPlane> arm_contact_planes(const Arm& arm, const ArmSkeleton& skeleton0,
-                                             const ArmSkeleton& skeleton1, const Positions& x0,
-                                             const Positions& v0, const Eigen::VectorXd& masses,
-                                             double h, const ArmContactSettings& settings,
-                                             const std::vector<double>& normal_forces,
-                                             const std::vector<char>& fixed,
-                                             std::vector<char>& released) {
+std::vector<ContactPlane> arm_contact_planes(const ArmMotion& arm_motion,
+                                             const ClothAtSubstepStart& cloth, double h,
+                                             const ArmContactSettings& settings,
+                                             const ArmContactMemory& memory) {
+  const Arm& arm = arm_motion.arm;
+  const ArmSkeleton &skeleton0 = arm_motion.skeleton0, &skeleton1 = arm_motion.skeleton1;
+  const Positions &x0 = cloth.x0, &v0 = cloth.v0;
+  const std::vector<char>& fixed = memory.fixed;
+  std::vector<char>& released = memory.released;
   std::vector<ContactPlane> planes;
   const auto motion = bone_motion(skeleton0, skeleton1);
   for (Eigen::Index i = 0; i < x0.rows(); ++i) {
@@ -66,9 +68,9 @@ std::vector<ContactPlane> arm_contact_planes(const Arm& arm, const ArmSkeleton& 
     c.vertex = static_cast<Index>(i);
     c.normal = d1.normal;
     c.point = carried + (settings.margin - d1.distance) * d1.normal;
-    c.stiffness = settings.stiffness_ratio * masses[i] / (h * h);
+    c.stiffness = settings.stiffness_ratio * cloth.masses[i] / (h * h);
     c.friction = settings.friction;
-    c.normal_force = normal_forces[k];
+    c.normal_force = memory.normal_forces[k];
     c.velocity = (carried - p) / h;
     c.slip_speed = c.tangential_speed(v0.row(i).transpose());
     planes.push_back(c);
@@ -93,11 +95,15 @@ std::int64_t finish_arm_contacts(const std::vector<ContactPlane>& planes, const 
   return pushing;
 }
 
-ArmCollisionStats project_out_of_arm(const Arm& arm, const ArmSkeleton& skeleton0,
-                                     const ArmSkeleton& skeleton1, const Positions& x0,
-                                     Positions& x1, double margin, double friction,
-                                     const std::vector<char>& fixed,
-                                     std::vector<Index>* projected_ids, ArmClearanceCache* cache) {
+ArmCollisionStats project_out_of_arm(const ArmMotion& arm_motion, const Positions& x0,
+                                     Positions& x1, const ArmProjection& projection) {
+  const Arm& arm = arm_motion.arm;
+  const ArmSkeleton &skeleton0 = arm_motion.skeleton0, &skeleton1 = arm_motion.skeleton1;
+  const double margin = projection.margin, friction = projection.friction;
+  static const std::vector<char> kNoneFixed;
+  const std::vector<char>& fixed = projection.fixed != nullptr ? *projection.fixed : kNoneFixed;
+  std::vector<Index>* const projected_ids = projection.projected_ids;
+  ArmClearanceCache* const cache = projection.cache;
   const auto motion = bone_motion(skeleton0, skeleton1);
   // Moves vertex i out of the arm; true when it moved. Touches row i of x1 and entry i of
   // the cache only, so vertices are independent.

@@ -52,19 +52,37 @@ struct ArmContactSettings {
 double face_clearance_margin(double min_arm_radius, double longest_rest_edge, double max_strain,
                              double clearance);
 
-/// Contact planes for the implicit solve of a substep of length `h`: every vertex not
-/// `fixed` and not `released` that is within `margin + activation` of the implicit arm of
-/// `skeleton0` gets a plane `margin` outside the arm of `skeleton1`, carried along by the
+/// The implicit arm over one substep: its skeleton at the start and at the end.
+struct ArmMotion {
+  const Arm& arm;
+  const ArmSkeleton& skeleton0;
+  const ArmSkeleton& skeleton1;
+};
+
+/// The cloth at the start of a substep, as the arm contacts read it.
+struct ClothAtSubstepStart {
+  const Positions& x0;            ///< positions
+  const Positions& v0;            ///< velocities
+  const Eigen::VectorXd& masses;  ///< per vertex
+};
+
+/// What the arm contacts keep per cloth vertex from one substep to the next.
+struct ArmContactMemory {
+  const std::vector<double>& normal_forces;  ///< lagged normal force (N)
+  const std::vector<char>& fixed;            ///< pinned vertices (empty: none)
+  std::vector<char>& released;               ///< leaving the arm: no spring this substep
+};
+
+/// Contact planes for the implicit solve of a substep of length `h`: every cloth vertex
+/// not `fixed` and not `released` that is within `margin + activation` of the implicit arm
+/// of `skeleton0` gets a plane `margin` outside the arm of `skeleton1`, carried along by the
 /// nearer bone's motion, with the bone's velocity there, Coulomb friction, the vertex's
-/// lagged normal force `normal_forces[i]` (N) and its slip speed at `v0`. Vertices farther
-/// away are cleared from `released`.
-std::vector<ContactPlane> arm_contact_planes(const Arm& arm, const ArmSkeleton& skeleton0,
-                                             const ArmSkeleton& skeleton1, const Positions& x0,
-                                             const Positions& v0, const Eigen::VectorXd& masses,
-                                             double h, const ArmContactSettings& settings,
-                                             const std::vector<double>& normal_forces,
-                                             const std::vector<char>& fixed,
-                                             std::vector<char>& released);
+/// lagged normal force and its slip speed at `v0`. Vertices farther away are cleared from
+/// `released`.
+std::vector<ContactPlane> arm_contact_planes(const ArmMotion& arm_motion,
+                                             const ClothAtSubstepStart& cloth, double h,
+                                             const ArmContactSettings& settings,
+                                             const ArmContactMemory& memory);
 
 /// After the solve: a plane whose spring would pull its vertex towards the arm marks the
 /// vertex `released` (it is leaving: the next substep gives it no spring); the others
@@ -104,16 +122,20 @@ class ArmClearanceCache {
   std::vector<double> m_clearance;  // 0: nothing known
 };
 
-/// Moves every vertex of `x1` not flagged in `fixed` (may be empty) to at least
-/// `margin` outside the implicit arm of `skeleton1`, and reduces its tangential motion
-/// relative to the arm (the rigid motion of the nearer bone from `skeleton0` to
-/// `skeleton1`) by at most `friction` times the normal correction. `cache` (optional, for
-/// `skeleton1` and `margin`) skips the vertices it proves clear and learns the others.
-ArmCollisionStats project_out_of_arm(const Arm& arm, const ArmSkeleton& skeleton0,
-                                     const ArmSkeleton& skeleton1, const Positions& x0,
-                                     Positions& x1, double margin, double friction,
-                                     const std::vector<char>& fixed,
-                                     std::vector<Index>* projected_ids = nullptr,
-                                     ArmClearanceCache* cache = nullptr);
+/// How project_out_of_arm moves the vertices.
+struct ArmProjection {
+  double margin = 0;    ///< keep every vertex this far outside the implicit arm (m)
+  double friction = 0;  ///< reduce tangential slip by at most this times the correction
+  const std::vector<char>* fixed = nullptr;     ///< vertices never moved (null: none)
+  std::vector<Index>* projected_ids = nullptr;  ///< receives the moved vertices (optional)
+  ArmClearanceCache* cache = nullptr;           ///< for skeleton1 and margin (optional)
+};
+
+/// Moves every vertex of `x1` not `fixed` to at least `margin` outside the implicit arm of
+/// `skeleton1`, and reduces its tangential motion relative to the arm (the rigid motion of
+/// the nearer bone from `skeleton0` to `skeleton1`) by at most `friction` times the normal
+/// correction. The `cache` skips the vertices it proves clear and learns the others.
+ArmCollisionStats project_out_of_arm(const ArmMotion& arm_motion, const Positions& x0,
+                                     Positions& x1, const ArmProjection& projection);
 
 }  // namespace tailor

@@ -206,9 +206,9 @@ struct Simulation::Impl {
     const double arm_friction =
         options.arm_friction >= 0 ? options.arm_friction : config.contact.friction;
     const ArmContactSettings arm_settings{margin, 0.5 * margin, kArmContactStiffness, arm_friction};
-    const std::vector<ContactPlane> planes =
-        arm_contact_planes(arm, skeleton, skeleton1, x, v, cloth.masses(), h, arm_settings,
-                           normal_forces, fixed, released);
+    const ArmMotion arm_motion{arm, skeleton, skeleton1};
+    const std::vector<ContactPlane> planes = arm_contact_planes(
+        arm_motion, {x, v, cloth.masses()}, h, arm_settings, {normal_forces, fixed, released});
     Positions x1, v1;
     record.cloth = cloth.step(x, v, targets, config.gravity, h, x1, v1, planes);
     record.arm_contacts = finish_arm_contacts(planes, x1, released, normal_forces);
@@ -217,8 +217,12 @@ struct Simulation::Impl {
     const auto strain_start = SteadyClock::now();
     arm_cache.reset(x1.rows());
     record.strain_limit = limiter.apply(x1, kStrainSweeps, [&](Positions& x_end) {
-      const ArmCollisionStats arm_stats = project_out_of_arm(
-          arm, skeleton, skeleton1, x, x_end, margin, 0.0, fixed, &projected_ids, &arm_cache);
+      const ArmCollisionStats arm_stats = project_out_of_arm(arm_motion, x, x_end,
+                                                             {.margin = margin,
+                                                              .friction = 0.0,
+                                                              .fixed = &fixed,
+                                                              .projected_ids = &projected_ids,
+                                                              .cache = &arm_cache});
       for (Index i : projected_ids) released[static_cast<std::size_t>(i)] = 0;
       record.arm_projected += arm_stats.projected;
       return arm_stats.projected;
