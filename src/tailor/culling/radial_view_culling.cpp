@@ -33,6 +33,67 @@ bool swept_boxes_disjoint(const std::array<Vec3, 6>& points, const Vec3& o0, con
   return false;
 }
 
+// A ghost triangle (w, u, centre) of a loop edge u -> w, closing a cluster's hole, with
+// its raw sign against the observer over the step.
+struct Ghost {
+  Index u, w;
+  Vec3 centre0, centre1;
+  signed char raw;
+};
+
+std::vector<Ghost> ghost_triangles(const std::vector<std::vector<Index>>& loops,
+                                   const Positions& x0, const Positions& x1, const Vec3& o0,
+                                   const Vec3& o1) {
+  std::vector<Ghost> ghosts;
+  for (const auto& loop : loops) {
+    const Vec3 centre0 = loop_centroid(x0, loop), centre1 = loop_centroid(x1, loop);
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const Index u = loop[i], w = loop[(i + 1) % loop.size()];
+      const auto raw = static_cast<signed char>(
+          coplanarity_sign(x0.row(w), x0.row(u), centre0, o0, x1.row(w), x1.row(u), centre1, o1));
+      ghosts.push_back({u, w, centre0, centre1, raw});
+    }
+  }
+  return ghosts;
+}
+
+std::array<Vec3, 6> ghost_corners(const Ghost& g, const Positions& x0, const Positions& x1) {
+  return {x0.row(g.w), x0.row(g.u), g.centre0, x1.row(g.w), x1.row(g.u), g.centre1};
+}
+
+std::array<Vec3, 6> swept_corners(const TriangleMesh& mesh, Index f, const Positions& x0,
+                                  const Positions& x1) {
+  const auto v = mesh.faces().row(f);
+  return {x0.row(v[0]), x0.row(v[1]), x0.row(v[2]), x1.row(v[0]), x1.row(v[1]), x1.row(v[2])};
+}
+
+// Rule (1) of the header: which raw sign means "seen" (+1 or -1), or 0 when the observer
+// may be on a triangle during the step or the winding number at t = 0 is not ±1.
+int seeing_sign(const TriangleMesh& mesh, const std::vector<Index>& faces,
+                const std::vector<signed char>& face_raw, const std::vector<Ghost>& ghosts,
+                const Positions& x0, const Positions& x1, const Vec3& o0, const Vec3& o1) {
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    if (face_raw[i] == 0 && !swept_boxes_disjoint(swept_corners(mesh, faces[i], x0, x1), o0, o1)) {
+      return 0;
+    }
+  }
+  for (const Ghost& g : ghosts) {
+    if (g.raw == 0 && !swept_boxes_disjoint(ghost_corners(g, x0, x1), o0, o1)) return 0;
+  }
+  std::vector<TriangleCorners> surface;
+  surface.reserve(faces.size() + ghosts.size());
+  for (Index f : faces) {
+    const auto v = mesh.faces().row(f);
+    surface.push_back({x0.row(v[0]), x0.row(v[1]), x0.row(v[2])});
+  }
+  for (const Ghost& g : ghosts) surface.push_back({x0.row(g.w), x0.row(g.u), g.centre0});
+  const std::optional<int> winding = winding_number(surface, o0);
+  // Behind an outward face det(b-a, c-a, o-a) < 0: with winding +1, "positive" is a
+  // negative raw sign; with winding -1 the cluster is oriented inward and it is the
+  // other way round.
+  return winding == 1 ? -1 : winding == -1 ? 1 : 0;
+}
+
 }  // namespace
 
 RadialViewCulling::RadialViewCulling(const TriangleMesh& mesh, const Positions& x_build,
@@ -174,56 +235,8 @@ void RadialViewCulling::classify_cluster(Index c) {
 
   // Raw signs of det(b-a, c-a, o-a) over the step (those the pairs did not need yet).
   for (Index f : faces) raw_sign(c, f);
-  // The ghost triangles (w, u, centre) of each loop edge u -> w.
-  struct Ghost {
-    Index u, w;
-    Vec3 centre0, centre1;
-    signed char raw;
-  };
-  std::vector<Ghost> ghosts;
-  for (const auto& loop : m_clusters.ghost_loops(c)) {
-    const Vec3 centre0 = loop_centroid(x0, loop), centre1 = loop_centroid(x1, loop);
-    for (std::size_t i = 0; i < loop.size(); ++i) {
-      const Index u = loop[i], w = loop[(i + 1) % loop.size()];
-      const auto raw = static_cast<signed char>(
-          coplanarity_sign(x0.row(w), x0.row(u), centre0, o0, x1.row(w), x1.row(u), centre1, o1));
-      ghosts.push_back({u, w, centre0, centre1, raw});
-    }
-  }
-  const auto corners = [&](Index f) {
-    const auto v = mesh.faces().row(f);
-    return std::array<Vec3, 6>{x0.row(v[0]), x0.row(v[1]), x0.row(v[2]),
-                               x1.row(v[0]), x1.row(v[1]), x1.row(v[2])};
-  };
-  const auto ghost_corners = [&](const Ghost& g) {
-    return std::array<Vec3, 6>{x0.row(g.w), x0.row(g.u), g.centre0,
-                               x1.row(g.w), x1.row(g.u), g.centre1};
-  };
-
-  // (1) of the header: the observer is on no triangle during the step, and the winding
-  // number at t = 0 is ±1.
-  bool on_surface = false;
-  for (std::size_t i = 0; i < faces.size() && !on_surface; ++i) {
-    on_surface = state.face_raw[i] == 0 && !swept_boxes_disjoint(corners(faces[i]), o0, o1);
-  }
-  for (std::size_t i = 0; i < ghosts.size() && !on_surface; ++i) {
-    on_surface = ghosts[i].raw == 0 && !swept_boxes_disjoint(ghost_corners(ghosts[i]), o0, o1);
-  }
-  std::optional<int> winding;
-  if (!on_surface) {
-    std::vector<TriangleCorners> surface;
-    surface.reserve(faces.size() + ghosts.size());
-    for (Index f : faces) {
-      const auto v = mesh.faces().row(f);
-      surface.push_back({x0.row(v[0]), x0.row(v[1]), x0.row(v[2])});
-    }
-    for (const Ghost& g : ghosts) surface.push_back({x0.row(g.w), x0.row(g.u), g.centre0});
-    winding = winding_number(surface, o0);
-  }
-  // Behind an outward face det(b-a, c-a, o-a) < 0: with winding +1, "positive" is a
-  // negative raw sign; with winding -1 the cluster is oriented inward and it is the
-  // other way round.
-  const int seeing = winding == 1 ? -1 : winding == -1 ? 1 : 0;
+  const std::vector<Ghost> ghosts = ghost_triangles(m_clusters.ghost_loops(c), x0, x1, o0, o1);
+  const int seeing = seeing_sign(mesh, faces, state.face_raw, ghosts, x0, x1, o0, o1);
   RadialViewCounts& counts = state.counts;
   if (seeing == 0) {
     counts.triangles_undetermined += static_cast<std::int64_t>(faces.size() + ghosts.size());
@@ -282,7 +295,7 @@ void RadialViewCulling::classify_cluster(Index c) {
   }
   std::vector<ViewCone> ghost_cones(ghosts.size());
   for (std::size_t i = 0; i < ghosts.size(); ++i) {
-    const auto p = ghost_corners(ghosts[i]);
+    const auto p = ghost_corners(ghosts[i], x0, x1);
     ghost_cones[i] = swept_view_cone(p[0], p[1], p[2], o0, p[3], p[4], p[5], o1);
   }
   find_clean_faces(c, blocking, ghost_cones);
