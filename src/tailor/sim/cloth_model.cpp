@@ -218,6 +218,93 @@ struct ClothModel::Impl {
     return energy;
   }
 
+  // The implicit Euler system of the step without contacts: A = (1 + h α) M + (h β + h²) K
+  // in `pattern`, and its right-hand side b (the forces, gravity and damping at x0, v0).
+  void assemble_dynamics(const Positions& x0, const Positions& v0, const Vec3& gravity, double h,
+                         Eigen::VectorXd& b) {
+    const Index n = 3 * nv;
+    // Forces and stiffness at x0.
+    Positions f = Positions::Zero(nv, 3);
+    SparseMatrix& A = pattern;
+    double* values = A.valuePtr();
+    std::fill(values, values + A.nonZeros(), 0.0);
+    evaluate(x0, &f, values);
+
+    const Eigen::Map<const Eigen::VectorXd> v(v0.data(), n);
+    const Eigen::VectorXd Kv = A * v;  // A holds K here
+    const double alpha = material.air_damping, beta = material.stiffness_damping;
+    for (Index i = 0; i < nv; ++i) {
+      for (int c = 0; c < 3; ++c) {
+        const Index k = 3 * i + c;
+        b[k] =
+            h * (f(i, c) + masses[i] * gravity[c] - alpha * masses[i] * v[k] - (beta + h) * Kv[k]);
+      }
+    }
+    // A = (1 + h α) M + (h β + h²) K.
+    const double s = h * beta + h * h;
+    for (int k = 0; k < A.nonZeros(); ++k) values[k] *= s;
+    for (Index i = 0; i < nv; ++i) {
+      for (int c = 0; c < 3; ++c)
+        values[diagonal_index[static_cast<std::size_t>(3 * i + c)]] += (1 + h * alpha) * masses[i];
+    }
+  }
+
+  // Contact springs and friction of the arm's planes, added to A and b.
+  void add_contact_planes(const std::vector<ContactPlane>& contacts, const Positions& x0,
+                          const Positions& v0, double h, Eigen::VectorXd& b) {
+    double* values = pattern.valuePtr();
+    // Contact springs: A += h² k n nᵀ, b += h (f0 - h k n (n·v0)), f0 = -k n (n·(x0 - q)).
+    // Friction (see ContactPlane): f = -c T (v0 + dv - w), c = μλ / max(s, kStickSpeed), so
+    // A += h c T and b -= h c T (v0 - w).
+    for (const ContactPlane& c : contacts) {
+      const Index i = c.vertex;
+      if (i < 0 || i >= nv || is_pinned[static_cast<std::size_t>(i)] != 0) continue;
+      const Vec3 xi = position(x0, i), vi = position(v0, i);
+      Vec3 rhs = h *
+                 (-c.stiffness * c.normal.dot(xi - c.point) - h * c.stiffness * c.normal.dot(vi)) *
+                 c.normal;
+      Mat3 block = (h * h * c.stiffness) * c.normal * c.normal.transpose();
+      const double damping =
+          c.friction * c.normal_force / std::max(c.slip_speed, ContactPlane::kStickSpeed);
+      if (damping > 0) {
+        const Mat3 tangent = Mat3::Identity() - c.normal * c.normal.transpose();
+        rhs -= h * damping * (tangent * (vi - c.velocity));
+        block += h * damping * tangent;
+      }
+      for (int a = 0; a < 3; ++a) b[3 * i + a] += rhs[a];
+      add_block(values, block_offset(i, i), i, block);
+    }
+  }
+
+  // Pinned vertices: their known velocity change, eliminated symmetrically from A and b;
+  // returned (zero elsewhere).
+  Eigen::VectorXd eliminate_pinned(const Positions& x0, const Positions& v0,
+                                   const Positions& pinned_targets, double h, Eigen::VectorXd& b) {
+    const Index n = 3 * nv;
+    SparseMatrix& A = pattern;
+    double* values = A.valuePtr();
+    // Pinned vertices: known velocity change, eliminated symmetrically.
+    Eigen::VectorXd dv_pinned = Eigen::VectorXd::Zero(n);
+    for (std::size_t p = 0; p < pinned.size(); ++p) {
+      const Index i = pinned[p];
+      for (int c = 0; c < 3; ++c) {
+        dv_pinned[3 * i + c] =
+            (pinned_targets(static_cast<Eigen::Index>(p), c) - x0(i, c)) / h - v0(i, c);
+      }
+    }
+    if (!pinned.empty()) {
+      b -= A * dv_pinned;
+      for (int k : pinned_zero_index) values[k] = 0;
+      for (Index i : pinned) {
+        for (int c = 0; c < 3; ++c) {
+          values[diagonal_index[static_cast<std::size_t>(3 * i + c)]] = 1;
+          b[3 * i + c] = dv_pinned[3 * i + c];
+        }
+      }
+    }
+    return dv_pinned;
+  }
+
   void update_pinned_lists() {
     diagonal_index.assign(static_cast<std::size_t>(3 * nv), -1);
     pinned_zero_index.clear();
@@ -427,76 +514,12 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0,
   }
   if (m.pinned_dirty) m.update_pinned_lists();
   const auto start = SteadyClock::now();
-
-  // Forces and stiffness at x0.
-  Positions f = Positions::Zero(m.nv, 3);
-  SparseMatrix& A = m.pattern;
-  double* values = A.valuePtr();
-  std::fill(values, values + A.nonZeros(), 0.0);
-  m.evaluate(x0, &f, values);
-
-  const Eigen::Map<const Eigen::VectorXd> v(v0.data(), n);
-  const Eigen::VectorXd Kv = A * v;  // A holds K here
-  const double alpha = m.material.air_damping, beta = m.material.stiffness_damping;
   Eigen::VectorXd b(n);
-  for (Index i = 0; i < m.nv; ++i) {
-    for (int c = 0; c < 3; ++c) {
-      const Index k = 3 * i + c;
-      b[k] = h *
-             (f(i, c) + m.masses[i] * gravity[c] - alpha * m.masses[i] * v[k] - (beta + h) * Kv[k]);
-    }
-  }
-  // A = (1 + h α) M + (h β + h²) K.
-  const double s = h * beta + h * h;
-  for (int k = 0; k < A.nonZeros(); ++k) values[k] *= s;
-  for (Index i = 0; i < m.nv; ++i) {
-    for (int c = 0; c < 3; ++c)
-      values[m.diagonal_index[static_cast<std::size_t>(3 * i + c)]] +=
-          (1 + h * alpha) * m.masses[i];
-  }
-
-  // Contact springs: A += h² k n nᵀ, b += h (f0 - h k n (n·v0)), f0 = -k n (n·(x0 - q)).
-  // Friction (see ContactPlane): f = -c T (v0 + dv - w), c = μλ / max(s, kStickSpeed), so
-  // A += h c T and b -= h c T (v0 - w).
-  for (const ContactPlane& c : contacts) {
-    const Index i = c.vertex;
-    if (i < 0 || i >= m.nv || m.is_pinned[static_cast<std::size_t>(i)] != 0) continue;
-    const Vec3 xi = position(x0, i), vi = position(v0, i);
-    Vec3 rhs = h *
-               (-c.stiffness * c.normal.dot(xi - c.point) - h * c.stiffness * c.normal.dot(vi)) *
-               c.normal;
-    Mat3 block = (h * h * c.stiffness) * c.normal * c.normal.transpose();
-    const double damping =
-        c.friction * c.normal_force / std::max(c.slip_speed, ContactPlane::kStickSpeed);
-    if (damping > 0) {
-      const Mat3 tangent = Mat3::Identity() - c.normal * c.normal.transpose();
-      rhs -= h * damping * (tangent * (vi - c.velocity));
-      block += h * damping * tangent;
-    }
-    for (int a = 0; a < 3; ++a) b[3 * i + a] += rhs[a];
-    m.add_block(values, m.block_offset(i, i), i, block);
-  }
-
-  // Pinned vertices: known velocity change, eliminated symmetrically.
-  Eigen::VectorXd dv_pinned = Eigen::VectorXd::Zero(n);
-  for (std::size_t p = 0; p < m.pinned.size(); ++p) {
-    const Index i = m.pinned[p];
-    for (int c = 0; c < 3; ++c) {
-      dv_pinned[3 * i + c] =
-          (pinned_targets(static_cast<Eigen::Index>(p), c) - x0(i, c)) / h - v0(i, c);
-    }
-  }
-  if (!m.pinned.empty()) {
-    b -= A * dv_pinned;
-    for (int k : m.pinned_zero_index) values[k] = 0;
-    for (Index i : m.pinned) {
-      for (int c = 0; c < 3; ++c) {
-        values[m.diagonal_index[static_cast<std::size_t>(3 * i + c)]] = 1;
-        b[3 * i + c] = dv_pinned[3 * i + c];
-      }
-    }
-  }
-
+  m.assemble_dynamics(x0, v0, gravity, h, b);
+  m.add_contact_planes(contacts, x0, v0, h, b);
+  const Eigen::VectorXd dv_pinned = m.eliminate_pinned(x0, v0, pinned_targets, h, b);
+  SparseMatrix& A = m.pattern;
+  const Eigen::Map<const Eigen::VectorXd> v(v0.data(), n);
   ClothStepInfo info;
   info.assemble_ms = milliseconds_since(start);
   const auto solve_start = SteadyClock::now();
