@@ -305,6 +305,109 @@ struct ClothModel::Impl {
     return dv_pinned;
   }
 
+  // Per face: the rest-shape gradient operators (in the warp direction when given) and
+  // area; lumped masses. Returns the faces' areas.
+  std::vector<double> build_face_rest(const Positions& rest, const Positions* warp) {
+    const Index nf = static_cast<Index>(faces.rows());
+    face_rest.resize(static_cast<std::size_t>(nf));
+    std::vector<double> face_area(static_cast<std::size_t>(nf));
+    for (Index t = 0; t < nf; ++t) {
+      const Vec3 p0 = position(rest, faces(t, 0)), p1 = position(rest, faces(t, 1)),
+                 p2 = position(rest, faces(t, 2));
+      const Vec3 n = (p1 - p0).cross(p2 - p0);
+      const double area = 0.5 * n.norm();
+      if (!(area > 1e-14 * std::max(1.0, (p1 - p0).squaredNorm()))) {
+        throw InputError(fmt::format("cloth: face {} is degenerate in the rest shape", t));
+      }
+      const Vec3 nh = n.normalized();
+      Vec3 e1 = warp != nullptr ? Vec3(warp->row(t).transpose()) : Vec3(p1 - p0);
+      e1 -= e1.dot(nh) * nh;
+      if (e1.norm() < 1e-6 * (p1 - p0).norm()) e1 = p1 - p0;
+      e1.normalize();
+      const Vec3 e2 = nh.cross(e1);
+      Eigen::Matrix2d D;
+      D << e1.dot(p1 - p0), e1.dot(p2 - p0), e2.dot(p1 - p0), e2.dot(p2 - p0);
+      const Eigen::Matrix2d Di = D.inverse();
+      FaceRest& r = face_rest[static_cast<std::size_t>(t)];
+      r.area = area;
+      r.cu = {-(Di(0, 0) + Di(1, 0)), Di(0, 0), Di(1, 0)};
+      r.cv = {-(Di(0, 1) + Di(1, 1)), Di(0, 1), Di(1, 1)};
+      face_area[static_cast<std::size_t>(t)] = area;
+      for (int i = 0; i < 3; ++i) masses[faces(t, i)] += material.density * area / 3;
+    }
+    return face_area;
+  }
+
+  // Bending hinges on interior manifold edges, oriented so face 0 holds a->b.
+  void build_hinges(const TriangleMesh& mesh, const Positions& rest,
+                    const std::vector<double>& face_area) {
+    for (Index e = 0; e < mesh.num_edges(); ++e) {
+      const auto ef = mesh.edge_faces(e);
+      if (ef.size() != 2) continue;
+      Index a = mesh.edges()(e, 0), b = mesh.edges()(e, 1);
+      const Index f0 = ef[0], f1 = ef[1];
+      const auto third = [&](Index f) {
+        for (int i = 0; i < 3; ++i) {
+          const Index v = faces(f, i);
+          if (v != a && v != b) return v;
+        }
+        return Index{-1};
+      };
+      for (int i = 0; i < 3; ++i) {
+        if (faces(f0, i) == b && faces(f0, (i + 1) % 3) == a) std::swap(a, b);
+      }
+      Hinge h;
+      h.v = {a, b, third(f0), third(f1)};
+      const double len2 = (position(rest, a) - position(rest, b)).squaredNorm();
+      h.weight =
+          3 * len2 /
+          (face_area[static_cast<std::size_t>(f0)] + face_area[static_cast<std::size_t>(f1)]);
+      h.rest_angle = dihedral_angle(position(rest, a), position(rest, b), position(rest, h.v[2]),
+                                    position(rest, h.v[3]));
+      hinges.push_back(h);
+    }
+  }
+
+  // Fixed sparsity: 3x3 blocks for every vertex pair sharing a face (the bending
+  // stiffness of a hinge's opposite vertices is lumped, see evaluate()), built column by
+  // column from sorted neighbour lists (no triplets: memory linear and small).
+  void build_pattern() {
+    const Index nf = static_cast<Index>(faces.rows());
+    std::vector<std::vector<Index>> neighbours(static_cast<std::size_t>(nv));
+    for (Index v = 0; v < nv; ++v) neighbours[static_cast<std::size_t>(v)].push_back(v);
+    for (Index t = 0; t < nf; ++t) {
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+          if (i != j) neighbours[static_cast<std::size_t>(faces(t, j))].push_back(faces(t, i));
+        }
+      }
+    }
+    std::int64_t nnz = 0;
+    for (auto& list : neighbours) {
+      std::sort(list.begin(), list.end());
+      list.erase(std::unique(list.begin(), list.end()), list.end());
+      nnz += 9 * static_cast<std::int64_t>(list.size());
+    }
+    if (nnz > std::numeric_limits<int>::max())
+      throw InputError("cloth: mesh too large for the sparse system");
+    pattern.resize(3 * nv, 3 * nv);
+    pattern.resizeNonZeros(static_cast<Eigen::Index>(nnz));
+    int* outer = pattern.outerIndexPtr();
+    int* inner = pattern.innerIndexPtr();
+    int k = 0;
+    for (Index J = 0; J < nv; ++J) {
+      const auto& list = neighbours[static_cast<std::size_t>(J)];
+      for (int b = 0; b < 3; ++b) {
+        outer[3 * J + b] = k;
+        for (Index I : list) {
+          for (int a = 0; a < 3; ++a) inner[k++] = 3 * I + a;
+        }
+      }
+    }
+    outer[3 * nv] = k;
+    std::fill(pattern.valuePtr(), pattern.valuePtr() + pattern.nonZeros(), 0.0);
+  }
+
   void update_pinned_lists() {
     diagonal_index.assign(static_cast<std::size_t>(3 * nv), -1);
     pinned_zero_index.clear();
@@ -343,97 +446,9 @@ ClothModel::ClothModel(const TriangleMesh& mesh, const Positions& rest,
   m.faces = mesh.faces();
   m.is_pinned.assign(static_cast<std::size_t>(m.nv), 0);
   m.masses = Eigen::VectorXd::Zero(m.nv);
-
-  const Index nf = mesh.num_faces();
-  m.face_rest.resize(static_cast<std::size_t>(nf));
-  std::vector<double> face_area(static_cast<std::size_t>(nf));
-  for (Index t = 0; t < nf; ++t) {
-    const Vec3 p0 = position(rest, m.faces(t, 0)), p1 = position(rest, m.faces(t, 1)),
-               p2 = position(rest, m.faces(t, 2));
-    const Vec3 n = (p1 - p0).cross(p2 - p0);
-    const double area = 0.5 * n.norm();
-    if (!(area > 1e-14 * std::max(1.0, (p1 - p0).squaredNorm()))) {
-      throw InputError(fmt::format("cloth: face {} is degenerate in the rest shape", t));
-    }
-    const Vec3 nh = n.normalized();
-    Vec3 e1 = warp != nullptr ? Vec3(warp->row(t).transpose()) : Vec3(p1 - p0);
-    e1 -= e1.dot(nh) * nh;
-    if (e1.norm() < 1e-6 * (p1 - p0).norm()) e1 = p1 - p0;
-    e1.normalize();
-    const Vec3 e2 = nh.cross(e1);
-    Eigen::Matrix2d D;
-    D << e1.dot(p1 - p0), e1.dot(p2 - p0), e2.dot(p1 - p0), e2.dot(p2 - p0);
-    const Eigen::Matrix2d Di = D.inverse();
-    FaceRest& r = m.face_rest[static_cast<std::size_t>(t)];
-    r.area = area;
-    r.cu = {-(Di(0, 0) + Di(1, 0)), Di(0, 0), Di(1, 0)};
-    r.cv = {-(Di(0, 1) + Di(1, 1)), Di(0, 1), Di(1, 1)};
-    face_area[static_cast<std::size_t>(t)] = area;
-    for (int i = 0; i < 3; ++i) m.masses[m.faces(t, i)] += material.density * area / 3;
-  }
-
-  // Hinges on interior manifold edges, oriented so face 0 holds a->b.
-  for (Index e = 0; e < mesh.num_edges(); ++e) {
-    const auto ef = mesh.edge_faces(e);
-    if (ef.size() != 2) continue;
-    Index a = mesh.edges()(e, 0), b = mesh.edges()(e, 1);
-    const Index f0 = ef[0], f1 = ef[1];
-    const auto third = [&](Index f) {
-      for (int i = 0; i < 3; ++i) {
-        const Index v = m.faces(f, i);
-        if (v != a && v != b) return v;
-      }
-      return Index{-1};
-    };
-    for (int i = 0; i < 3; ++i) {
-      if (m.faces(f0, i) == b && m.faces(f0, (i + 1) % 3) == a) std::swap(a, b);
-    }
-    Hinge h;
-    h.v = {a, b, third(f0), third(f1)};
-    const double len2 = (position(rest, a) - position(rest, b)).squaredNorm();
-    h.weight = 3 * len2 /
-               (face_area[static_cast<std::size_t>(f0)] + face_area[static_cast<std::size_t>(f1)]);
-    h.rest_angle = dihedral_angle(position(rest, a), position(rest, b), position(rest, h.v[2]),
-                                  position(rest, h.v[3]));
-    m.hinges.push_back(h);
-  }
-
-  // Fixed sparsity: 3x3 blocks for every vertex pair sharing a face (the bending
-  // stiffness of a hinge's opposite vertices is lumped, see evaluate()), built column by
-  // column from sorted neighbour lists (no triplets: memory linear and small).
-  std::vector<std::vector<Index>> neighbours(static_cast<std::size_t>(m.nv));
-  for (Index v = 0; v < m.nv; ++v) neighbours[static_cast<std::size_t>(v)].push_back(v);
-  for (Index t = 0; t < nf; ++t) {
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) {
-        if (i != j) neighbours[static_cast<std::size_t>(m.faces(t, j))].push_back(m.faces(t, i));
-      }
-    }
-  }
-  std::int64_t nnz = 0;
-  for (auto& list : neighbours) {
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-    nnz += 9 * static_cast<std::int64_t>(list.size());
-  }
-  if (nnz > std::numeric_limits<int>::max())
-    throw InputError("cloth: mesh too large for the sparse system");
-  m.pattern.resize(3 * m.nv, 3 * m.nv);
-  m.pattern.resizeNonZeros(static_cast<Eigen::Index>(nnz));
-  int* outer = m.pattern.outerIndexPtr();
-  int* inner = m.pattern.innerIndexPtr();
-  int k = 0;
-  for (Index J = 0; J < m.nv; ++J) {
-    const auto& list = neighbours[static_cast<std::size_t>(J)];
-    for (int b = 0; b < 3; ++b) {
-      outer[3 * J + b] = k;
-      for (Index I : list) {
-        for (int a = 0; a < 3; ++a) inner[k++] = 3 * I + a;
-      }
-    }
-  }
-  outer[3 * m.nv] = k;
-  std::fill(m.pattern.valuePtr(), m.pattern.valuePtr() + m.pattern.nonZeros(), 0.0);
+  const std::vector<double> face_area = m.build_face_rest(rest, warp);
+  m.build_hinges(mesh, rest, face_area);
+  m.build_pattern();
   m.find_block_offsets();
   m.last_dv = Eigen::VectorXd::Zero(3 * m.nv);
 }
