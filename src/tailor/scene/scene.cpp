@@ -132,72 +132,72 @@ constexpr double kBig = 1e12;
 
 }  // namespace
 
-SceneConfig parse_scene_config(const json& root, const std::string& source) {
-  SceneConfig c;
-  FieldReader top(root, "", source);
-  std::string description;
-  top.string("description", description);
-  if (const json* arm = top.object("arm")) {
-    FieldReader r(*arm, "arm", source);
-    r.number("upper_arm_length", c.arm.upper_arm_length, 0, 10);
-    r.number("forearm_length", c.arm.forearm_length, 0, 10);
-    r.number("shoulder_radius", c.arm.shoulder_radius, 0, 5);
-    r.number("elbow_radius", c.arm.elbow_radius, 0, 5);
-    r.number("wrist_radius", c.arm.wrist_radius, 0, 5);
-    r.number("elbow_blend", c.arm.elbow_blend, 0, 5);
-    r.integer("rings", c.arm.rings, 2, 100000);
-    r.integer("segments", c.arm.segments, 3, 100000);
-    r.integer("cap_rings", c.arm.cap_rings, 1, 10000);
-    r.finish();
-  }
-  if (const json* g = top.object("gesture")) {
-    FieldReader r(*g, "gesture", source);
-    r.string("name", c.gesture.name);
-    const auto names = gesture_names();
-    if (std::find(names.begin(), names.end(), c.gesture.name) == names.end()) {
-      r.fail("gesture.name", fmt::format("must be one of elbow, raise, twist, got \"{}\"",
-                                         excerpt(c.gesture.name)));
-    }
-    r.number("max_flexion_deg", c.gesture.max_flexion_deg, 0, 160, false);
-    r.number("speed", c.gesture.speed, 0, 100);
-    r.number("settle_time", c.gesture.settle_time, 0, 1000, false);
-    r.finish();
-  }
-  if (const json* s = top.object("sleeve")) {
-    FieldReader r(*s, "sleeve", source);
-    r.integer("rings", c.sleeve.rings, 2, 1 << 20);
-    r.integer("segments", c.sleeve.segments, 3, 1 << 20);
-    r.number("slack", c.sleeve.slack, 0, 5);
-    r.number("start", c.sleeve.start, 0, 10, false);
-    r.number("length", c.sleeve.length, 0, 10);
-    if (const json* m = r.object("material")) {
-      FieldReader mr(*m, "sleeve.material", source);
-      mr.number("density", c.material.density, 0, 1000);
-      mr.number("stretch_stiffness", c.material.stretch_stiffness, 0, kBig);
-      mr.number("shear_stiffness", c.material.shear_stiffness, 0, kBig, false);
-      mr.number("bending_stiffness", c.material.bending_stiffness, 0, kBig, false);
-      mr.number("stiffness_damping", c.material.stiffness_damping, 0, 10, false);
-      mr.number("air_damping", c.material.air_damping, 0, 1000, false);
-      mr.number("strain_limit", c.material.strain_limit, 0, 10);
-      mr.finish();
-    }
-    r.finish();
-  }
-  if (const json* ct = top.object("contact")) {
-    FieldReader r(*ct, "contact", source);
-    r.number("thickness", c.contact.thickness, 0, 1);
-    r.number("friction", c.contact.friction, 0, 10, false);
-    r.integer("max_impulse_iterations", c.contact.max_impulse_iterations, 1, 100000);
-    r.integer("max_zone_iterations", c.contact.max_zone_iterations, 1, 100000);
-    r.finish();
-  }
-  top.number("time_step", c.time_step, 0, 10);
-  top.integer("substeps", c.substeps, 1, 100000);
-  top.integer("frames", c.frames, 0, 10000000);
-  top.vec3("gravity", c.gravity, 1e4);
-  top.finish();
+namespace {
 
-  // Cross-field checks the per-field ranges cannot express.
+// The "arm" object of a scene file.
+void read_arm(const json& object, const std::string& source, ArmParams& arm) {
+  FieldReader r(object, "arm", source);
+  r.number("upper_arm_length", arm.upper_arm_length, 0, 10);
+  r.number("forearm_length", arm.forearm_length, 0, 10);
+  r.number("shoulder_radius", arm.shoulder_radius, 0, 5);
+  r.number("elbow_radius", arm.elbow_radius, 0, 5);
+  r.number("wrist_radius", arm.wrist_radius, 0, 5);
+  r.number("elbow_blend", arm.elbow_blend, 0, 5);
+  r.integer("rings", arm.rings, 2, 100000);
+  r.integer("segments", arm.segments, 3, 100000);
+  r.integer("cap_rings", arm.cap_rings, 1, 10000);
+  r.finish();
+}
+
+// The "gesture" object.
+void read_gesture(const json& object, const std::string& source, GestureParams& gesture) {
+  FieldReader r(object, "gesture", source);
+  r.string("name", gesture.name);
+  const auto names = gesture_names();
+  if (std::find(names.begin(), names.end(), gesture.name) == names.end()) {
+    r.fail("gesture.name",
+           fmt::format("must be one of elbow, raise, twist, got \"{}\"", excerpt(gesture.name)));
+  }
+  r.number("max_flexion_deg", gesture.max_flexion_deg, 0, 160, false);
+  r.number("speed", gesture.speed, 0, 100);
+  r.number("settle_time", gesture.settle_time, 0, 1000, false);
+  r.finish();
+}
+
+// The "sleeve" object and its "material".
+void read_sleeve(const json& object, const std::string& source, SceneConfig& c) {
+  FieldReader r(object, "sleeve", source);
+  r.integer("rings", c.sleeve.rings, 2, 1 << 20);
+  r.integer("segments", c.sleeve.segments, 3, 1 << 20);
+  r.number("slack", c.sleeve.slack, 0, 5);
+  r.number("start", c.sleeve.start, 0, 10, false);
+  r.number("length", c.sleeve.length, 0, 10);
+  if (const json* m = r.object("material")) {
+    FieldReader mr(*m, "sleeve.material", source);
+    mr.number("density", c.material.density, 0, 1000);
+    mr.number("stretch_stiffness", c.material.stretch_stiffness, 0, kBig);
+    mr.number("shear_stiffness", c.material.shear_stiffness, 0, kBig, false);
+    mr.number("bending_stiffness", c.material.bending_stiffness, 0, kBig, false);
+    mr.number("stiffness_damping", c.material.stiffness_damping, 0, 10, false);
+    mr.number("air_damping", c.material.air_damping, 0, 1000, false);
+    mr.number("strain_limit", c.material.strain_limit, 0, 10);
+    mr.finish();
+  }
+  r.finish();
+}
+
+// The "contact" object.
+void read_contact(const json& object, const std::string& source, ContactParams& contact) {
+  FieldReader r(object, "contact", source);
+  r.number("thickness", contact.thickness, 0, 1);
+  r.number("friction", contact.friction, 0, 10, false);
+  r.integer("max_impulse_iterations", contact.max_impulse_iterations, 1, 100000);
+  r.integer("max_zone_iterations", contact.max_zone_iterations, 1, 100000);
+  r.finish();
+}
+
+// Cross-field checks the per-field ranges cannot express, and the memory the scene needs.
+void check_scene(const SceneConfig& c, const std::string& source, FieldReader& top) {
   const double arm_length = c.arm.upper_arm_length + c.arm.forearm_length;
   if (c.sleeve.start + c.sleeve.length > arm_length) {
     top.fail("sleeve.length",
@@ -219,6 +219,25 @@ SceneConfig parse_scene_config(const json& root, const std::string& source) {
                                   "{} cap rings, {} segments)",
                                   source, c.sleeve.rings, c.sleeve.segments, c.arm.rings,
                                   c.arm.cap_rings, c.arm.segments));
+}
+
+}  // namespace
+
+SceneConfig parse_scene_config(const json& root, const std::string& source) {
+  SceneConfig c;
+  FieldReader top(root, "", source);
+  std::string description;
+  top.string("description", description);
+  if (const json* arm = top.object("arm")) read_arm(*arm, source, c.arm);
+  if (const json* g = top.object("gesture")) read_gesture(*g, source, c.gesture);
+  if (const json* s = top.object("sleeve")) read_sleeve(*s, source, c);
+  if (const json* ct = top.object("contact")) read_contact(*ct, source, c.contact);
+  top.number("time_step", c.time_step, 0, 10);
+  top.integer("substeps", c.substeps, 1, 100000);
+  top.integer("frames", c.frames, 0, 10000000);
+  top.vec3("gravity", c.gravity, 1e4);
+  top.finish();
+  check_scene(c, source, top);
   return c;
 }
 
