@@ -25,25 +25,9 @@ struct LaneFlags {
   std::int64_t halves[PairBatch::kCapacity];        // else excluded on both halves
 };
 
-// One build of the lanes per instruction set (batch_pair_filter_lanes.inc says why).
-namespace sse2 {
-constexpr int W = 2;
-#include "tailor/candidates/batch_pair_filter_lanes.inc"
-}  // namespace sse2
-#pragma GCC push_options
-#pragma GCC target("avx2")
-namespace avx2 {
-constexpr int W = 4;
-#include "tailor/candidates/batch_pair_filter_lanes.inc"
-}  // namespace avx2
-#pragma GCC pop_options
-#pragma GCC push_options
-#pragma GCC target("avx512f,avx512dq,avx2")
-namespace avx512 {
-constexpr int W = 8;
-#include "tailor/candidates/batch_pair_filter_lanes.inc"
-}  // namespace avx512
-#pragma GCC pop_options
+// One build of the lanes per instruction set (lanes_per_target.inc).
+#define TAILOR_LANES_FILE "tailor/candidates/batch_pair_filter_lanes.inc"
+#include "tailor/candidates/lanes_per_target.inc"
 
 using LaneKernel = void (*)(PairKind, const PairBatch&, LanePolynomials&, LaneFlags&);
 using SubdivisionKernel = void (*)(PairKind, const PairBatch&, const LanePolynomials&, LaneFlags&);

@@ -15,25 +15,9 @@ struct PairBatches {
   MovingTriangleBatch first, second;
 };
 
-// One build of the lanes per instruction set.
-namespace sse2 {
-constexpr int W = 2;
-#include "tailor/candidates/triangle_plane_sides_lanes.inc"
-}  // namespace sse2
-#pragma GCC push_options
-#pragma GCC target("avx2")
-namespace avx2 {
-constexpr int W = 4;
-#include "tailor/candidates/triangle_plane_sides_lanes.inc"
-}  // namespace avx2
-#pragma GCC pop_options
-#pragma GCC push_options
-#pragma GCC target("avx512f,avx512dq,avx2")
-namespace avx512 {
-constexpr int W = 8;
-#include "tailor/candidates/triangle_plane_sides_lanes.inc"
-}  // namespace avx512
-#pragma GCC pop_options
+// One build of the lanes per instruction set (lanes_per_target.inc).
+#define TAILOR_LANES_FILE "tailor/candidates/triangle_plane_sides_lanes.inc"
+#include "tailor/candidates/lanes_per_target.inc"
 
 using BatchKernel = void (*)(const PairBatches&, TrianglePairSides*);
 

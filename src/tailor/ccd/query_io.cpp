@@ -64,6 +64,47 @@ double exact_ratio(std::string_view num, std::string_view den, const std::string
   return x;
 }
 
+// Splits a CSV line into its trimmed fields, at most 7; returns how many (8: more than 7).
+int split_fields(std::string_view rest, std::string_view (&fields)[7]) {
+  int n = 0;
+  for (;;) {
+    const std::size_t comma = rest.find(',');
+    if (n == 7) return 8;  // too many: the count is all the message needs
+    fields[n++] = trim(rest.substr(0, comma));
+    if (comma == std::string_view::npos) return n;
+    rest.remove_prefix(comma + 1);
+  }
+}
+
+// The points read, one per row, with the row's truth (when the file has the column) and
+// line number.
+struct QueryRows {
+  std::vector<Vec3> points;
+  std::vector<int> truth;
+  std::vector<std::size_t> line;
+};
+
+// Eight rows per query, into the file's queries and their truth.
+void assemble_queries(const QueryRows& read, bool with_truth, const std::string& path,
+                      CcdQueryFile& file) {
+  const std::size_t count = read.points.size() / 8;
+  for (std::size_t i = 0; i < count; ++i) {
+    const Vec3* r = &read.points[8 * i];
+    if (file.kind == CcdQueryKind::vertex_face) {
+      file.vertex_face.push_back({r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7]});
+    } else {
+      file.edge_edge.push_back({r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7]});
+    }
+    if (!with_truth) continue;
+    for (int k = 1; k < 8; ++k) {
+      if (read.truth[8 * i + k] != read.truth[8 * i]) {
+        fail(path, read.line[8 * i + k], "truth differs within one query");
+      }
+    }
+    file.truth.push_back(read.truth[8 * i] != 0);
+  }
+}
+
 }  // namespace
 
 std::optional<CcdQueryKind> ccd_query_kind_from_path(const std::string& path) {
@@ -94,9 +135,10 @@ CcdQueryFile parse_ccd_queries(std::string_view text, const std::string& path,
   }
   file.kind = *kind;
 
-  std::vector<Vec3> rows;
-  std::vector<int> row_truth;
-  std::vector<std::size_t> row_line;
+  QueryRows read;
+  std::vector<Vec3>& rows = read.points;
+  std::vector<int>& row_truth = read.truth;
+  std::vector<std::size_t>& row_line = read.line;
   int columns = -1;
   std::size_t line = 0;
   for (std::size_t pos = 0; pos < text.size();) {
@@ -112,17 +154,7 @@ CcdQueryFile parse_ccd_queries(std::string_view text, const std::string& path,
     pos = end + 1;
     if (trim(rest).empty()) continue;
     std::string_view fields[7];
-    int n = 0;
-    for (;;) {
-      const std::size_t comma = rest.find(',');
-      if (n == 7) {
-        n = 8;  // too many: the count is all the message needs
-        break;
-      }
-      fields[n++] = trim(rest.substr(0, comma));
-      if (comma == std::string_view::npos) break;
-      rest.remove_prefix(comma + 1);
-    }
+    const int n = split_fields(rest, fields);
     if (n != 6 && n != 7) {
       fail(path, line,
            fmt::format("expected 6 or 7 columns, got {}", n == 8 ? "more" : std::to_string(n)));
@@ -149,23 +181,7 @@ CcdQueryFile parse_ccd_queries(std::string_view text, const std::string& path,
     fail(path, line,
          "the number of rows (" + std::to_string(rows.size()) + ") is not a multiple of 8");
   }
-  const std::size_t count = rows.size() / 8;
-  for (std::size_t i = 0; i < count; ++i) {
-    const Vec3* r = &rows[8 * i];
-    if (file.kind == CcdQueryKind::vertex_face) {
-      file.vertex_face.push_back({r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7]});
-    } else {
-      file.edge_edge.push_back({r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7]});
-    }
-    if (columns == 7) {
-      for (int k = 1; k < 8; ++k) {
-        if (row_truth[8 * i + k] != row_truth[8 * i]) {
-          fail(path, row_line[8 * i + k], "truth differs within one query");
-        }
-      }
-      file.truth.push_back(row_truth[8 * i] != 0);
-    }
-  }
+  assemble_queries(read, columns == 7, path, file);
   return file;
 }
 

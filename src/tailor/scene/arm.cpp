@@ -47,6 +47,109 @@ void check_positive(double value, const char* name) {
   }
 }
 
+// The parameters' ranges, and the memory the arm's mesh would take.
+void validate_arm_params(const ArmParams& params) {
+  check_positive(params.upper_arm_length, "upper_arm_length");
+  check_positive(params.forearm_length, "forearm_length");
+  check_positive(params.shoulder_radius, "shoulder_radius");
+  check_positive(params.elbow_radius, "elbow_radius");
+  check_positive(params.wrist_radius, "wrist_radius");
+  check_positive(params.elbow_blend, "elbow_blend");
+  if (params.rings < 2 || params.segments < 3 || params.cap_rings < 1) {
+    throw InputError(
+        fmt::format("arm: resolution too low (rings {} ≥ 2, segments {} ≥ 3, "
+                    "cap_rings {} ≥ 1 needed)",
+                    params.rings, params.segments, params.cap_rings));
+  }
+  // Round cones need |ra - rb| < length.
+  if (std::abs(params.shoulder_radius - params.elbow_radius) >= params.upper_arm_length ||
+      std::abs(params.elbow_radius - params.wrist_radius) >= params.forearm_length) {
+    throw InputError("arm: radii differ by more than a bone length");
+  }
+  // Vertex ids are 32-bit: whatever the budget, stay far from the range's end.
+  if (arm_memory_estimate(params) / 4096.0 > static_cast<double>(std::int64_t{1} << 28)) {
+    throw InputError(
+        fmt::format("arm: resolution too high ({} rings, {} cap rings, {} segments: "
+                    "more than 2^28 vertices)",
+                    params.rings, params.cap_rings, params.segments));
+  }
+  check_memory_budget(arm_memory_estimate(params),
+                      fmt::format("an arm of {} rings, {} cap rings and {} segments", params.rings,
+                                  params.cap_rings, params.segments));
+}
+
+// The surface points of the arm in its rest pose, ring by ring from the shoulder pole to
+// the wrist pole (a pole is a ring of one vertex): (first vertex, count) per ring.
+struct ArmRings {
+  std::vector<Vec3> points;
+  std::vector<std::pair<Index, Index>> rings;
+};
+
+ArmRings cast_arm_rings(const Arm& arm, const ArmParams& params) {
+  const double max_r = std::max({params.shoulder_radius, params.elbow_radius, params.wrist_radius});
+
+  const ArmSkeleton rest = arm.skeleton(ArmPose{});
+  const auto sdf = [&](const Vec3& p) { return arm.signed_distance(rest, p); };
+  const int seg = params.segments;
+  const double total = params.upper_arm_length + params.forearm_length;
+  const Vec3 shoulder = rest.shoulder();
+  const Vec3 wrist = rest.wrist(params.forearm_length);
+  const double t_max = 4 * max_r;
+
+  ArmRings out;
+  std::vector<Vec3>& points = out.points;
+  std::vector<std::pair<Index, Index>>& rings = out.rings;
+  const auto add_ring = [&](const Vec3& origin, double axial, double radial_scale) {
+    // Directions (axial, radial_scale * cos, radial_scale * sin), cast from `origin`.
+    rings.emplace_back(static_cast<Index>(points.size()), seg);
+    for (int j = 0; j < seg; ++j) {
+      const double phi = 2 * std::numbers::pi * j / seg;
+      const Vec3 dir =
+          Vec3(axial, radial_scale * std::cos(phi), radial_scale * std::sin(phi)).normalized();
+      points.push_back(origin + ray_to_surface(sdf, origin, dir, t_max) * dir);
+    }
+  };
+  const auto add_pole = [&](const Vec3& origin, const Vec3& dir) {
+    rings.emplace_back(static_cast<Index>(points.size()), 1);
+    points.push_back(origin + ray_to_surface(sdf, origin, dir, t_max) * dir);
+  };
+  const int caps = params.cap_rings;
+  add_pole(shoulder, -Vec3::UnitX());
+  for (int k = 1; k < caps; ++k) {
+    const double alpha = 0.5 * std::numbers::pi * (caps - k) / caps;
+    add_ring(shoulder, -std::sin(alpha), std::cos(alpha));
+  }
+  for (int k = 0; k <= params.rings; ++k) {
+    add_ring(shoulder + Vec3(total * k / params.rings, 0, 0), 0.0, 1.0);
+  }
+  for (int k = caps - 1; k >= 1; --k) {
+    const double alpha = 0.5 * std::numbers::pi * (caps - k) / caps;
+    add_ring(wrist, std::sin(alpha), std::cos(alpha));
+  }
+  add_pole(wrist, Vec3::UnitX());
+  return out;
+}
+
+// Faces between consecutive rings, oriented outwards.
+FaceArray ring_faces(const std::vector<std::pair<Index, Index>>& rings, int seg) {
+  std::vector<Eigen::Matrix<Index, 1, 3>> faces;
+  for (std::size_t r = 0; r + 1 < rings.size(); ++r) {
+    const auto [a0, na] = rings[r];
+    const auto [b0, nb] = rings[r + 1];
+    for (int j = 0; j < seg; ++j) {
+      const int jn = (j + 1) % seg;
+      const Index a = a0 + (na == 1 ? 0 : j), an = a0 + (na == 1 ? 0 : jn);
+      const Index b = b0 + (nb == 1 ? 0 : j), bn = b0 + (nb == 1 ? 0 : jn);
+      if (na != 1) faces.emplace_back(a, an, b);
+      if (nb != 1) faces.emplace_back(an, bn, b);
+    }
+  }
+  FaceArray face_array(static_cast<Eigen::Index>(faces.size()), 3);
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    face_array.row(static_cast<Eigen::Index>(f)) = faces[f];
+  return face_array;
+}
+
 }  // namespace
 
 double round_cone_distance(const Vec3& p, const Vec3& a, const Vec3& b, double ra, double rb,
@@ -94,96 +197,14 @@ double arm_memory_estimate(const ArmParams& params) {
 }
 
 Arm::Arm(const ArmParams& params) : m_params(params) {
-  check_positive(params.upper_arm_length, "upper_arm_length");
-  check_positive(params.forearm_length, "forearm_length");
-  check_positive(params.shoulder_radius, "shoulder_radius");
-  check_positive(params.elbow_radius, "elbow_radius");
-  check_positive(params.wrist_radius, "wrist_radius");
-  check_positive(params.elbow_blend, "elbow_blend");
-  if (params.rings < 2 || params.segments < 3 || params.cap_rings < 1) {
-    throw InputError(
-        fmt::format("arm: resolution too low (rings {} ≥ 2, segments {} ≥ 3, "
-                    "cap_rings {} ≥ 1 needed)",
-                    params.rings, params.segments, params.cap_rings));
-  }
-  // Round cones need |ra - rb| < length.
-  if (std::abs(params.shoulder_radius - params.elbow_radius) >= params.upper_arm_length ||
-      std::abs(params.elbow_radius - params.wrist_radius) >= params.forearm_length) {
-    throw InputError("arm: radii differ by more than a bone length");
-  }
-  // Vertex ids are 32-bit: whatever the budget, stay far from the range's end.
-  if (arm_memory_estimate(params) / 4096.0 > static_cast<double>(std::int64_t{1} << 28)) {
-    throw InputError(
-        fmt::format("arm: resolution too high ({} rings, {} cap rings, {} segments: "
-                    "more than 2^28 vertices)",
-                    params.rings, params.cap_rings, params.segments));
-  }
-  check_memory_budget(arm_memory_estimate(params),
-                      fmt::format("an arm of {} rings, {} cap rings and {} segments", params.rings,
-                                  params.cap_rings, params.segments));
-  const double max_r = std::max({params.shoulder_radius, params.elbow_radius, params.wrist_radius});
-
-  const ArmSkeleton rest = skeleton(ArmPose{});
-  const auto sdf = [&](const Vec3& p) { return signed_distance(rest, p); };
-  const int seg = params.segments;
-  const double total = params.upper_arm_length + params.forearm_length;
-  const Vec3 shoulder = rest.shoulder();
-  const Vec3 wrist = rest.wrist(params.forearm_length);
-  const double t_max = 4 * max_r;
-
-  // Rings from the shoulder pole to the wrist pole; a pole is a ring of one vertex.
-  std::vector<Vec3> points;
-  std::vector<std::pair<Index, Index>> rings;  // (first vertex, count)
-  const auto add_ring = [&](const Vec3& origin, double axial, double radial_scale) {
-    // Directions (axial, radial_scale * cos, radial_scale * sin), cast from `origin`.
-    rings.emplace_back(static_cast<Index>(points.size()), seg);
-    for (int j = 0; j < seg; ++j) {
-      const double phi = 2 * std::numbers::pi * j / seg;
-      const Vec3 dir =
-          Vec3(axial, radial_scale * std::cos(phi), radial_scale * std::sin(phi)).normalized();
-      points.push_back(origin + ray_to_surface(sdf, origin, dir, t_max) * dir);
-    }
-  };
-  const auto add_pole = [&](const Vec3& origin, const Vec3& dir) {
-    rings.emplace_back(static_cast<Index>(points.size()), 1);
-    points.push_back(origin + ray_to_surface(sdf, origin, dir, t_max) * dir);
-  };
-  const int caps = params.cap_rings;
-  add_pole(shoulder, -Vec3::UnitX());
-  for (int k = 1; k < caps; ++k) {
-    const double alpha = 0.5 * std::numbers::pi * (caps - k) / caps;
-    add_ring(shoulder, -std::sin(alpha), std::cos(alpha));
-  }
-  for (int k = 0; k <= params.rings; ++k) {
-    add_ring(shoulder + Vec3(total * k / params.rings, 0, 0), 0.0, 1.0);
-  }
-  for (int k = caps - 1; k >= 1; --k) {
-    const double alpha = 0.5 * std::numbers::pi * (caps - k) / caps;
-    add_ring(wrist, std::sin(alpha), std::cos(alpha));
-  }
-  add_pole(wrist, Vec3::UnitX());
-
-  // Faces between consecutive rings, oriented outwards.
-  std::vector<Eigen::Matrix<Index, 1, 3>> faces;
-  for (std::size_t r = 0; r + 1 < rings.size(); ++r) {
-    const auto [a0, na] = rings[r];
-    const auto [b0, nb] = rings[r + 1];
-    for (int j = 0; j < seg; ++j) {
-      const int jn = (j + 1) % seg;
-      const Index a = a0 + (na == 1 ? 0 : j), an = a0 + (na == 1 ? 0 : jn);
-      const Index b = b0 + (nb == 1 ? 0 : j), bn = b0 + (nb == 1 ? 0 : jn);
-      if (na != 1) faces.emplace_back(a, an, b);
-      if (nb != 1) faces.emplace_back(an, bn, b);
-    }
-  }
+  validate_arm_params(params);
+  const ArmRings surface = cast_arm_rings(*this, params);
+  const std::vector<Vec3>& points = surface.points;
   m_rest.resize(static_cast<Eigen::Index>(points.size()), 3);
   for (std::size_t i = 0; i < points.size(); ++i)
     m_rest.row(static_cast<Eigen::Index>(i)) = points[i].transpose();
-  FaceArray face_array(static_cast<Eigen::Index>(faces.size()), 3);
-  for (std::size_t f = 0; f < faces.size(); ++f)
-    face_array.row(static_cast<Eigen::Index>(f)) = faces[f];
-  m_mesh = std::make_unique<TriangleMesh>(static_cast<Index>(points.size()), std::move(face_array));
-
+  m_mesh = std::make_unique<TriangleMesh>(static_cast<Index>(points.size()),
+                                          ring_faces(surface.rings, params.segments));
   m_forearm_weight.resize(m_rest.rows());
   for (Eigen::Index i = 0; i < m_rest.rows(); ++i) {
     m_forearm_weight[i] = forearm_weight(m_rest.row(i).transpose());
