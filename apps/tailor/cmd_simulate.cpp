@@ -18,6 +18,7 @@
 #include "progress.hpp"
 #include "thread_limit.hpp"
 #include "tailor/geometry/error.hpp"
+#include "tailor/render/animation.hpp"
 #include "tailor/render/run_renderer.hpp"
 #include "tailor/scene/scene.hpp"
 #include "tailor/sim/frame_writer.hpp"
@@ -189,6 +190,12 @@ int run_simulate(const SimulateOptions& o) {
   print_table(summary);
   fmt::print("  {:<30} {}{}\n", "pictures", sheet.string(),
              o.render ? fmt::format(" and render_NNNN.png ({} frames)", sim.frame() + 1) : "");
+  if (o.render) {
+    // Played at the simulation's own frame rate.
+    const AnimationResult animation = write_animation(o.out, 1.0 / config.time_step);
+    fmt::print("  {:<30} {}\n", "animation",
+               animation.written ? animation.path.string() : "not written: " + animation.reason);
+  }
   if (interrupted) spdlog::warn("interrupted after frame {}", sim.frame());
   const std::int64_t intersections = summary["intersections"].get<std::int64_t>();
   if (intersections > 0) {
@@ -225,7 +232,8 @@ const CommandRegistration simulate_registration{
                     "Run the static intersection check after every frame (the contact solver "
                     "certifies every substep either way; exit 1 if anything is found)");
       cmd->add_flag("--render", o->render,
-                    "Also write a PNG of every frame (render_NNNN.png; contact_sheet.png is "
+                    "Also write a PNG of every frame (render_NNNN.png) and animation.mp4 (ffmpeg; "
+                    "contact_sheet.png is "
                     "always written)");
       cmd->add_flag("!--no-contacts", o->contacts,
                     "Do not write the per-frame contact files (contacts_NNNN.json, clusters.json)");

@@ -119,6 +119,74 @@ TEST(Rasterizer, NearerTriangleHidesFartherOneAndBackFacesUseTheBackColour) {
   EXPECT_EQ(behind.image().at(100, 100).g, 0);
 }
 
+/// A roof along the y axis seen from +z: ridge at x = 0, each side sloping down by
+/// `tilt_deg` (four faces of equal area, facing the camera).
+void roof(double tilt_deg, Positions& x, FaceArray& f) {
+  const double drop = 0.5 * std::tan(tilt_deg * std::numbers::pi / 180.0);
+  x.resize(6, 3);
+  x << -0.5, -0.5, -drop, -0.5, 0.5, -drop, 0, -0.5, 0, 0, 0.5, 0, 0.5, -0.5, -drop, 0.5, 0.5,
+      -drop;
+  f.resize(4, 3);
+  f << 0, 2, 3, 0, 3, 1, 2, 4, 5, 2, 5, 3;
+}
+
+/// The roof drawn in grey {200, 200, 200} at 200 × 200 pixels, one sample per pixel.
+Rasterizer draw_roof(double tilt_deg, Shading shading) {
+  Camera camera;
+  camera.eye = Vec3(0, 0, 3);
+  Positions x;
+  FaceArray faces;
+  roof(tilt_deg, x, faces);
+  Rasterizer raster(200, 200, camera, {255, 255, 255});
+  const auto grey = [](Index) { return Rgb{200, 200, 200}; };
+  ShadingOptions options;
+  options.shading = shading;
+  raster.draw(x, faces, {grey, grey}, options);
+  return raster;
+}
+
+/// The grey a pixel whose unit normal is `n` gets.
+int expected_grey(const Rasterizer& raster, const Vec3& n) {
+  return static_cast<int>(std::lround(
+      200 * (Rasterizer::kAmbient + Rasterizer::kDiffuse * std::max(0.0, n.dot(raster.light())))));
+}
+
+TEST(Rasterizer, SmoothShadingIsContinuousAcrossAGentleFoldWhereFlatShadingSteps) {
+  const double tilt = 15 * std::numbers::pi / 180;
+  const Vec3 left(-std::sin(tilt), 0, std::cos(tilt)), right(std::sin(tilt), 0, std::cos(tilt));
+  const Rasterizer flat = draw_roof(15, Shading::flat);
+  const Rasterizer smooth = draw_roof(15, Shading::smooth);
+  // The ridge is the line between pixel columns 99 and 100; row 100 is halfway along it,
+  // where ridge vertices 2 (left + 2 right) and 3 (2 left + right) average to +z.
+  const int row = 100;
+  EXPECT_NEAR(flat.image().at(90, row).r, expected_grey(flat, left), 1);
+  EXPECT_NEAR(flat.image().at(110, row).r, expected_grey(flat, right), 1);
+  const int step = std::abs(expected_grey(flat, left) - expected_grey(flat, right));
+  ASSERT_GE(step, 10);  // the light tells the sides apart
+  EXPECT_GE(std::abs(flat.image().at(99, row).r - flat.image().at(100, row).r), step - 1);
+  EXPECT_NEAR(smooth.image().at(99, row).r, expected_grey(smooth, Vec3::UnitZ()), 1);
+  EXPECT_NEAR(smooth.image().at(100, row).r, expected_grey(smooth, Vec3::UnitZ()), 1);
+  // Along the row, neighbouring pixels differ by at most one level: no seam anywhere.
+  int largest_jump = 0;
+  for (int x = 60; x < 140; ++x) {
+    largest_jump = std::max(
+        largest_jump, std::abs(smooth.image().at(x + 1, row).r - smooth.image().at(x, row).r));
+  }
+  EXPECT_LE(largest_jump, 1);
+}
+
+TEST(Rasterizer, SmoothShadingKeepsAFoldSharperThanTheCreaseAngle) {
+  // Sides 100 degrees apart (crease angle 60): smooth shading draws exactly what flat does.
+  const Rasterizer flat = draw_roof(50, Shading::flat);
+  const Rasterizer smooth = draw_roof(50, Shading::smooth);
+  std::int64_t differing = 0;
+  for (int y = 0; y < 200; ++y) {
+    for (int x = 0; x < 200; ++x) differing += !(flat.image().at(x, y) == smooth.image().at(x, y));
+  }
+  EXPECT_EQ(differing, 0);
+  EXPECT_GE(std::abs(smooth.image().at(99, 100).r - smooth.image().at(100, 100).r), 10);
+}
+
 TEST(FrameRenderer, HighlightedFacesAreRed) {
   Positions x;
   FaceArray faces;
@@ -188,6 +256,12 @@ TEST(RenderCommand, RendersASimulationFolder) {
     EXPECT_LT(picture.count(RenderSettings{}.background), 160 * 120);
   }
   EXPECT_NO_THROW(read_png(out / "contact_sheet.png"));
+  EXPECT_GT(fs::file_size(out / "animation.mp4"), 0u);  // test_animation checks its frames
+  fs::remove(out / "animation.mp4");
+  ASSERT_EQ(run_cli({"render", out.string(), "--width", "160", "--height", "120", "--flat",
+                     "--no-animation"}),
+            0);
+  EXPECT_FALSE(fs::exists(out / "animation.mp4"));
   // Into another folder, the sheet only.
   const fs::path elsewhere = out / "pictures";
   ASSERT_EQ(run_cli({"render", out.string(), "--out", elsewhere.string(), "--sheet-only"}), 0);

@@ -18,7 +18,7 @@ Image render_frame(const FrameView& view, const Camera& camera, const RenderSett
   Rasterizer raster(settings.width * ss, settings.height * ss, camera, settings.background);
   if (view.arm != nullptr && view.arm_faces != nullptr) {
     const auto skin = [&](Index) { return settings.arm; };
-    raster.draw(*view.arm, *view.arm_faces, {skin, skin});
+    raster.draw(*view.arm, *view.arm_faces, {skin, skin}, settings.shading);
   }
   if (view.cloth != nullptr && view.cloth_faces != nullptr) {
     std::vector<char> red(static_cast<std::size_t>(view.cloth_faces->rows()), 0);
@@ -31,7 +31,7 @@ Image render_frame(const FrameView& view, const Camera& camera, const RenderSett
     const auto inside = [&](Index f) {
       return red[static_cast<std::size_t>(f)] ? settings.candidate : settings.cloth_inside;
     };
-    raster.draw(*view.cloth, *view.cloth_faces, {outside, inside});
+    raster.draw(*view.cloth, *view.cloth_faces, {outside, inside}, settings.shading);
   }
   return raster.image().downsampled(ss);
 }

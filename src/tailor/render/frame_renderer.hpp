@@ -14,9 +14,10 @@ namespace tailor {
 
 /// Colours and size of the pictures.
 struct RenderSettings {
-  int width = 640;  ///< output pixels
-  int height = 480;
-  int supersample = 2;         ///< rendered at this factor, then box-filtered
+  int width = 1280;  ///< output pixels
+  int height = 720;
+  int supersample = 2;         ///< anti-aliasing: rendered at this factor, then box-filtered
+  ShadingOptions shading;      ///< smooth (crease-aware) by default
   Vec3 view{0.25, 1.0, 0.65};  ///< from the scene towards the camera
   Vec3 up{0, 0, -1};           ///< image up (projected)
   Rgb background{245, 245, 242};

@@ -1,11 +1,13 @@
 /// @file
-/// Perspective projection, edge-function rasterisation and flat two-sided shading.
+/// Perspective projection, edge-function rasterisation and two-sided Lambert shading.
 
 #include "tailor/render/rasterizer.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+
+#include "tailor/render/corner_normals.hpp"
 
 namespace tailor {
 
@@ -50,40 +52,44 @@ Rasterizer::Rasterizer(int width, int height, const Camera& camera, Rgb backgrou
   m_light = (-m_forward + 0.6 * m_up - 0.4 * m_right).normalized();
 }
 
-void Rasterizer::draw(const Positions& vertices, const FaceArray& faces, const MeshStyle& style) {
+void Rasterizer::draw(const Positions& vertices, const FaceArray& faces, const MeshStyle& style,
+                      const ShadingOptions& shading) {
   const double cx = 0.5 * m_image.width(), cy = 0.5 * m_image.height();
   const double near = 1e-3;
+  const bool smooth = shading.shading == Shading::smooth;
+  const CornerNormals corners =
+      smooth ? corner_normals(vertices, faces, shading.crease_angle_deg) : CornerNormals();
   for (Index f = 0; f < static_cast<Index>(faces.rows()); ++f) {
-    std::array<Eigen::Vector3d, 3> screen;
+    ScreenTriangle t;
     std::array<Vec3, 3> p;
     bool visible = true;
     for (int k = 0; k < 3; ++k) {
-      p[k] = vertices.row(faces(f, k)).transpose();
+      p[k] = position(vertices, faces(f, k));
       const Vec3 d = p[k] - m_camera.eye;
       const double depth = d.dot(m_forward);
       if (!(depth > near)) {
         visible = false;
         break;
       }
-      screen[k] = {cx + m_focal * d.dot(m_right) / depth, cy - m_focal * d.dot(m_up) / depth,
-                   1.0 / depth};
+      t.corner[k] = {cx + m_focal * d.dot(m_right) / depth, cy - m_focal * d.dot(m_up) / depth,
+                     1.0 / depth};
     }
     if (!visible) continue;
     Vec3 n = (p[1] - p[0]).cross(p[2] - p[0]);
     if (!(n.norm() > 0)) continue;
     n.normalize();
     const bool front = n.dot(m_camera.eye - p[0]) >= 0;
-    const Rgb base = front ? style.front(f) : style.back(f);
-    const double facing = front ? n.dot(m_light) : -n.dot(m_light);
-    const double shade = 0.35 + 0.65 * std::max(0.0, facing);
-    const auto scale = [shade](std::uint8_t c) {
-      return static_cast<std::uint8_t>(std::clamp(std::lround(c * shade), 0L, 255L));
-    };
-    fill_triangle(screen, {scale(base.r), scale(base.g), scale(base.b)});
+    const double side = front ? 1.0 : -1.0;  // normals turned to the side the camera sees
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 corner = smooth ? Vec3(corners.row(3 * f + k).transpose()) : n;
+      t.normal[k] = side * (corner.isZero() ? n : corner);
+    }
+    fill_triangle(t, front ? style.front(f) : style.back(f));
   }
 }
 
-void Rasterizer::fill_triangle(const std::array<Eigen::Vector3d, 3>& s, Rgb colour) {
+void Rasterizer::fill_triangle(const ScreenTriangle& t, Rgb colour) {
+  const auto& s = t.corner;
   const double area =
       (s[1].x() - s[0].x()) * (s[2].y() - s[0].y()) - (s[2].x() - s[0].x()) * (s[1].y() - s[0].y());
   if (!(std::abs(area) > 1e-12)) return;
@@ -99,6 +105,9 @@ void Rasterizer::fill_triangle(const std::array<Eigen::Vector3d, 3>& s, Rgb colo
   const auto edge = [](const Eigen::Vector3d& a, const Eigen::Vector3d& b, double px, double py) {
     return (b.x() - a.x()) * (py - a.y()) - (b.y() - a.y()) * (px - a.x());
   };
+  const auto scale = [](std::uint8_t c, double shade) {
+    return static_cast<std::uint8_t>(std::clamp(std::lround(c * shade), 0L, 255L));
+  };
   for (int y = y0; y <= y1; ++y) {
     const double py = y + 0.5;
     for (int x = x0; x <= x1; ++x) {
@@ -109,11 +118,17 @@ void Rasterizer::fill_triangle(const std::array<Eigen::Vector3d, 3>& s, Rgb colo
       const double w1 = edge(s[2], s[0], px, py) / area;
       const double w2 = 1 - w0 - w1;
       if (w0 < 0 || w1 < 0 || w2 < 0) continue;
-      const float inv_depth = static_cast<float>(w0 * s[0].z() + w1 * s[1].z() + w2 * s[2].z());
+      const double inv_depth = w0 * s[0].z() + w1 * s[1].z() + w2 * s[2].z();
       float& d = m_depth[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + x];
-      if (inv_depth <= d) continue;
-      d = inv_depth;
-      m_image.at(x, y) = colour;
+      if (static_cast<float>(inv_depth) <= d) continue;
+      d = static_cast<float>(inv_depth);
+      // Perspective-correct interpolation: screen weights times 1 / depth, renormalised.
+      const Vec3 normal =
+          ((w0 * s[0].z() / inv_depth) * t.normal[0] + (w1 * s[1].z() / inv_depth) * t.normal[1] +
+           (w2 * s[2].z() / inv_depth) * t.normal[2])
+              .normalized();
+      const double shade = kAmbient + kDiffuse * std::max(0.0, normal.dot(m_light));
+      m_image.at(x, y) = {scale(colour.r, shade), scale(colour.g, shade), scale(colour.b, shade)};
     }
   }
 }

@@ -1,7 +1,9 @@
 #pragma once
 /// @file
-/// A small z-buffered triangle rasteriser with a perspective camera and flat shading.
+/// A small z-buffered triangle rasteriser with a perspective camera and two-sided Lambert
+/// shading, flat or smooth (per-pixel interpolated crease-aware corner normals).
 
+#include <array>
 #include <functional>
 #include <vector>
 
@@ -31,21 +33,51 @@ struct MeshStyle {
   std::function<Rgb(Index face)> back;
 };
 
+/// How a mesh's faces are shaded.
+enum class Shading {
+  flat,    ///< one normal per face: facets show
+  smooth,  ///< per-pixel normals interpolated from crease-aware corner normals
+};
+
+/// How to shade one mesh.
+struct ShadingOptions {
+  Shading shading = Shading::smooth;  ///< flat or smooth
+  /// Smooth shading averages normals only across faces meeting at less than this angle
+  /// (degrees; see corner_normals), so folds sharper than it stay creased.
+  double crease_angle_deg = 60;
+};
+
 /// Draws triangles into a colour image with a depth buffer.
 class Rasterizer {
  public:
   /// A `width` × `height` canvas cleared to `background`.
   Rasterizer(int width, int height, const Camera& camera, Rgb background);
 
-  /// Draws every face of a mesh, flat-shaded: the colour times (ambient + diffuse) from a
-  /// light over the camera's shoulder, two-sided.
-  void draw(const Positions& vertices, const FaceArray& faces, const MeshStyle& style);
+  /// Share of a colour that every lit pixel keeps, whatever its normal.
+  static constexpr double kAmbient = 0.35;
+  /// Share that a pixel whose normal points at the light adds.
+  static constexpr double kDiffuse = 0.65;
+
+  /// Draws every face of a mesh, two-sided: a pixel gets its face's colour (front or back,
+  /// by the side of the face the camera sees) times kAmbient + kDiffuse · max(0, n · light),
+  /// with n the face normal (flat) or the interpolated corner normal (smooth), turned
+  /// towards the camera's side of the face.
+  void draw(const Positions& vertices, const FaceArray& faces, const MeshStyle& style,
+            const ShadingOptions& shading = {});
 
   /// The colour image.
   const Image& image() const { return m_image; }
+  /// The unit direction towards the light (above the camera's left shoulder).
+  const Vec3& light() const { return m_light; }
 
  private:
-  void fill_triangle(const std::array<Eigen::Vector3d, 3>& screen, Rgb colour);
+  /// A face on screen: pixel x, pixel y, 1 / view depth per corner, and the unit normal
+  /// per corner (already on the side the camera sees).
+  struct ScreenTriangle {
+    std::array<Eigen::Vector3d, 3> corner;
+    std::array<Vec3, 3> normal;
+  };
+  void fill_triangle(const ScreenTriangle& triangle, Rgb colour);
 
   Image m_image;
   std::vector<float> m_depth;  // 1 / view depth; larger is nearer; 0 is empty
