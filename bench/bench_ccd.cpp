@@ -310,13 +310,13 @@ void BM_CoplanaritySign(benchmark::State& state) {
     culled = 0;
     for (const auto& q : s.vf) {
       const StepSign r =
-          coplanarity_sign(q.a_t0, q.b_t0, q.c_t0, q.p_t0, q.a_t1, q.b_t1, q.c_t1, q.p_t1);
+          coplanarity_sign({q.a_t0, q.b_t0, q.c_t0, q.p_t0}, {q.a_t1, q.b_t1, q.c_t1, q.p_t1});
       benchmark::DoNotOptimize(r);
       culled += r != StepSign::mixed;
     }
     for (const auto& q : s.ee) {
-      const StepSign r = coplanarity_sign(q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1,
-                                          q.ea1_t1, q.eb0_t1, q.eb1_t1);
+      const StepSign r = coplanarity_sign({q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0},
+                                          {q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1});
       benchmark::DoNotOptimize(r);
       culled += r != StepSign::mixed;
     }

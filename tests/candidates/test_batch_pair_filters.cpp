@@ -35,9 +35,9 @@ Pair from(const EdgeEdgeQuery& q) {
 PairVerdict one_pair_verdict(const Pair& q, PairFilters filters) {
   const Vec3* p = q.p;
   if (q.kind == PairKind::vertex_face) {
-    return vertex_face_verdict(p[3], p[0], p[1], p[2], p[7], p[4], p[5], p[6], filters);
+    return vertex_face_verdict({p[3], p[0], p[1], p[2]}, {p[7], p[4], p[5], p[6]}, filters);
   }
-  return edge_edge_verdict(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], filters);
+  return edge_edge_verdict({p[0], p[1], p[2], p[3]}, {p[4], p[5], p[6], p[7]}, filters);
 }
 
 std::vector<Pair> test_pairs() {

@@ -21,13 +21,13 @@ namespace {
 using tailor::testing::sanitized;
 
 bool keeps(const VertexFaceQuery& q) {
-  return vertex_face_may_touch_in_projection(q.p_t0, q.a_t0, q.b_t0, q.c_t0, q.p_t1, q.a_t1, q.b_t1,
-                                             q.c_t1);
+  return vertex_face_may_touch_in_projection({q.p_t0, q.a_t0, q.b_t0, q.c_t0},
+                                             {q.p_t1, q.a_t1, q.b_t1, q.c_t1});
 }
 
 bool keeps(const EdgeEdgeQuery& q) {
-  return edge_edge_may_touch_in_projection(q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1,
-                                           q.ea1_t1, q.eb0_t1, q.eb1_t1);
+  return edge_edge_may_touch_in_projection({q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0},
+                                           {q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1});
 }
 
 Vec3 scaled(const Vec3& x, int e) {
@@ -103,7 +103,7 @@ TEST(ProjectionFilter, KeepsEveryHitOfTheExactCcdOnRandomQueries) {
         ASSERT_TRUE(keeps(q)) << "VF trial " << trial;
       }
       if (!keeps(q) &&
-          may_become_coplanar(q.a_t0, q.b_t0, q.c_t0, q.p_t0, q.a_t1, q.b_t1, q.c_t1, q.p_t1)) {
+          may_become_coplanar({q.a_t0, q.b_t0, q.c_t0, q.p_t0}, {q.a_t1, q.b_t1, q.c_t1, q.p_t1})) {
         ++culled_by_projection_only;
       }
     } else {
@@ -113,8 +113,8 @@ TEST(ProjectionFilter, KeepsEveryHitOfTheExactCcdOnRandomQueries) {
       if (hit) {
         ASSERT_TRUE(keeps(q)) << "EE trial " << trial;
       }
-      if (!keeps(q) && may_become_coplanar(q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1,
-                                           q.ea1_t1, q.eb0_t1, q.eb1_t1)) {
+      if (!keeps(q) && may_become_coplanar({q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0},
+                                           {q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1})) {
         ++culled_by_projection_only;
       }
     }
@@ -126,35 +126,37 @@ TEST(ProjectionFilter, KeepsEveryHitOfTheExactCcdOnRandomQueries) {
 TEST(ProjectionFilter, CullsAVertexCrossingThePlaneBesideTheFace) {
   const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
   // Through the plane at (2, 2): coplanar at t = 1/2, far outside the triangle.
-  EXPECT_TRUE(may_become_coplanar(a, b, c, Vec3(2, 2, 1), a, b, c, Vec3(2, 2, -1)));
+  EXPECT_TRUE(may_become_coplanar({a, b, c, Vec3(2, 2, 1)}, {a, b, c, Vec3(2, 2, -1)}));
   EXPECT_FALSE(
-      vertex_face_may_touch_in_projection(Vec3(2, 2, 1), a, b, c, Vec3(2, 2, -1), a, b, c));
+      vertex_face_may_touch_in_projection({Vec3(2, 2, 1), a, b, c}, {Vec3(2, 2, -1), a, b, c}));
   // Through the triangle, and exactly through its corner: kept.
+  EXPECT_TRUE(vertex_face_may_touch_in_projection({Vec3(0.2, 0.2, 1), a, b, c},
+                                                  {Vec3(0.2, 0.2, -1), a, b, c}));
   EXPECT_TRUE(
-      vertex_face_may_touch_in_projection(Vec3(0.2, 0.2, 1), a, b, c, Vec3(0.2, 0.2, -1), a, b, c));
-  EXPECT_TRUE(vertex_face_may_touch_in_projection(Vec3(1, 0, 1), a, b, c, Vec3(1, 0, -1), a, b, c));
+      vertex_face_may_touch_in_projection({Vec3(1, 0, 1), a, b, c}, {Vec3(1, 0, -1), a, b, c}));
   // Sliding in the plane: apart (culled) and into the triangle (kept).
-  EXPECT_FALSE(vertex_face_may_touch_in_projection(Vec3(2, 2, 0), a, b, c, Vec3(3, 2, 0), a, b, c));
+  EXPECT_FALSE(
+      vertex_face_may_touch_in_projection({Vec3(2, 2, 0), a, b, c}, {Vec3(3, 2, 0), a, b, c}));
   EXPECT_TRUE(
-      vertex_face_may_touch_in_projection(Vec3(2, 2, 0), a, b, c, Vec3(0.1, 0.1, 0), a, b, c));
+      vertex_face_may_touch_in_projection({Vec3(2, 2, 0), a, b, c}, {Vec3(0.1, 0.1, 0), a, b, c}));
 }
 
 TEST(ProjectionFilter, CullsEdgesCrossingSideBySide) {
   const Vec3 a(0, 0, 0), b(1, 0, 0);
   // Edge cd parallel to y, passing z = 0 beside ab (x = 2), and across it (x = 0.5).
-  EXPECT_FALSE(edge_edge_may_touch_in_projection(a, b, Vec3(2, -1, 1), Vec3(2, 1, 1), a, b,
-                                                 Vec3(2, -1, -1), Vec3(2, 1, -1)));
-  EXPECT_TRUE(edge_edge_may_touch_in_projection(a, b, Vec3(0.5, -1, 1), Vec3(0.5, 1, 1), a, b,
-                                                Vec3(0.5, -1, -1), Vec3(0.5, 1, -1)));
+  EXPECT_FALSE(edge_edge_may_touch_in_projection({a, b, Vec3(2, -1, 1), Vec3(2, 1, 1)},
+                                                 {a, b, Vec3(2, -1, -1), Vec3(2, 1, -1)}));
+  EXPECT_TRUE(edge_edge_may_touch_in_projection({a, b, Vec3(0.5, -1, 1), Vec3(0.5, 1, 1)},
+                                                {a, b, Vec3(0.5, -1, -1), Vec3(0.5, 1, -1)}));
   // Touching at an endpoint exactly at t = 1.
-  EXPECT_TRUE(edge_edge_may_touch_in_projection(a, b, Vec3(1, 0, 1), Vec3(1, 1, 1), a, b,
-                                                Vec3(1, 0, 0), Vec3(1, 1, 0)));
+  EXPECT_TRUE(edge_edge_may_touch_in_projection({a, b, Vec3(1, 0, 1), Vec3(1, 1, 1)},
+                                                {a, b, Vec3(1, 0, 0), Vec3(1, 1, 0)}));
   // Coplanar for the whole step: parallel edges sliding side by side (culled), and an
   // edge sliding across ab (kept).
-  EXPECT_FALSE(edge_edge_may_touch_in_projection(a, b, Vec3(2, 0.5, 0), Vec3(3, 0.5, 0), a, b,
-                                                 Vec3(-1, 0.5, 0), Vec3(0, 0.5, 0)));
-  EXPECT_TRUE(edge_edge_may_touch_in_projection(a, b, Vec3(3, -1, 0), Vec3(3, 1, 0), a, b,
-                                                Vec3(0.5, -1, 0), Vec3(0.5, 1, 0)));
+  EXPECT_FALSE(edge_edge_may_touch_in_projection({a, b, Vec3(2, 0.5, 0), Vec3(3, 0.5, 0)},
+                                                 {a, b, Vec3(-1, 0.5, 0), Vec3(0, 0.5, 0)}));
+  EXPECT_TRUE(edge_edge_may_touch_in_projection({a, b, Vec3(3, -1, 0), Vec3(3, 1, 0)},
+                                                {a, b, Vec3(0.5, -1, 0), Vec3(0.5, 1, 0)}));
 }
 
 }  // namespace

@@ -76,9 +76,9 @@ Vec3 at(const Positions& x, Index v) {
 StepSign exact_side(const TrianglePairs& t, Index plane, Index points, int corner) {
   const auto& f = t.faces;
   const Index q = f(points, corner);
-  return coplanarity_sign(at(t.x0, f(plane, 0)), at(t.x0, f(plane, 1)), at(t.x0, f(plane, 2)),
-                          at(t.x0, q), at(t.x1, f(plane, 0)), at(t.x1, f(plane, 1)),
-                          at(t.x1, f(plane, 2)), at(t.x1, q));
+  return coplanarity_sign(
+      {at(t.x0, f(plane, 0)), at(t.x0, f(plane, 1)), at(t.x0, f(plane, 2)), at(t.x0, q)},
+      {at(t.x1, f(plane, 0)), at(t.x1, f(plane, 1)), at(t.x1, f(plane, 2)), at(t.x1, q)});
 }
 
 TEST(TrianglePlaneSides, EveryCertifiedSideIsTheExactSignInEveryBuild) {

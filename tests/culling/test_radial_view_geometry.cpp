@@ -103,7 +103,7 @@ TEST(MovingPlane, SideIsCoplanaritySign) {
         break;
     }
     const MovingPlane plane(a0, q0, r0, a1, q1, r1);
-    const StepSign expected = coplanarity_sign(a0, p0, q0, r0, a1, p1, q1, r1);
+    const StepSign expected = coplanarity_sign({a0, p0, q0, r0}, {a1, p1, q1, r1});
     ASSERT_EQ(plane.side(p0, p1), expected) << i;
     decided += expected != StepSign::mixed;
   }

@@ -43,7 +43,7 @@ StepSign reference_sign(const std::array<Vec3, 8>& x) {
 }
 
 StepSign tested_sign(const std::array<Vec3, 8>& x) {
-  return coplanarity_sign(x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7]);
+  return coplanarity_sign({x[0], x[1], x[2], x[3]}, {x[4], x[5], x[6], x[7]});
 }
 
 TEST(CoplanarityFilter, MatchesExactFormulaOnRandomAndDegenerateInputs) {
@@ -88,7 +88,7 @@ TEST(CoplanarityFilter, MatchesExactFormulaOnRandomAndDegenerateInputs) {
         ASSERT_EQ(tested_sign(y), expect) << "case " << i << " scaled 2^" << e;
       }
     }
-    EXPECT_EQ(may_become_coplanar(x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7]),
+    EXPECT_EQ(may_become_coplanar({x[0], x[1], x[2], x[3]}, {x[4], x[5], x[6], x[7]}),
               expect == StepSign::mixed);
   }
   EXPECT_GT(counts[0], 0);
@@ -99,17 +99,17 @@ TEST(CoplanarityFilter, MatchesExactFormulaOnRandomAndDegenerateInputs) {
 TEST(CoplanarityFilter, HandMadeCases) {
   const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
   // d stays above the plane: positive; crosses it: mixed; touches it at t = 1: mixed.
-  EXPECT_EQ(coplanarity_sign(a, b, c, {0, 0, 1}, a, b, c, {5, 5, 2}), StepSign::positive);
-  EXPECT_EQ(coplanarity_sign(a, b, c, {0, 0, -1}, a, b, c, {5, 5, -2}), StepSign::negative);
-  EXPECT_EQ(coplanarity_sign(a, b, c, {0, 0, 1}, a, b, c, {0, 0, -1}), StepSign::mixed);
-  EXPECT_EQ(coplanarity_sign(a, b, c, {0, 0, 1}, a, b, c, {0, 0, 0}), StepSign::mixed);
+  EXPECT_EQ(coplanarity_sign({a, b, c, {0, 0, 1}}, {a, b, c, {5, 5, 2}}), StepSign::positive);
+  EXPECT_EQ(coplanarity_sign({a, b, c, {0, 0, -1}}, {a, b, c, {5, 5, -2}}), StepSign::negative);
+  EXPECT_EQ(coplanarity_sign({a, b, c, {0, 0, 1}}, {a, b, c, {0, 0, -1}}), StepSign::mixed);
+  EXPECT_EQ(coplanarity_sign({a, b, c, {0, 0, 1}}, {a, b, c, {0, 0, 0}}), StepSign::mixed);
   const double tiny = std::numeric_limits<double>::denorm_min();
-  EXPECT_EQ(coplanarity_sign(a, b, c, {0, 0, 1}, a, b, c, {0, 0, tiny}), StepSign::positive);
+  EXPECT_EQ(coplanarity_sign({a, b, c, {0, 0, 1}}, {a, b, c, {0, 0, tiny}}), StepSign::positive);
   // A huge coordinate next to a tiny one (cancellation beyond the double bound).
   const double big = 0x1p40;
-  EXPECT_EQ(coplanarity_sign({big, 0, 0}, {big + 1, 0, 0}, {big, 1, 0}, {big + 1, 1, 0x1p-40},
-                             {big, 0, 0}, {big + 1, 0, 0}, {big, 1, 0}, {big + 1, 1, 0x1p-40}),
-            StepSign::positive);
+  const FourPoints still{Vec3(big, 0, 0), Vec3(big + 1, 0, 0), Vec3(big, 1, 0),
+                         Vec3(big + 1, 1, 0x1p-40)};
+  EXPECT_EQ(coplanarity_sign(still, still), StepSign::positive);
 }
 
 TEST(CoplanarityFilter, ExactSignsFromStackIntegersAndGmp) {
@@ -124,8 +124,8 @@ TEST(CoplanarityFilter, ExactSignsFromStackIntegersAndGmp) {
                                     Vec3(far, far, 0), Vec3(far, 1, z)};
         EXPECT_EQ(tested_sign(x), reference_sign(x)) << far << " " << tiny << " " << z;
         for (int i = 0; i < 4; ++i) {
-          const int exact = detail::coplanarity_coefficient_sign_exact(i, x[0], x[1], x[2], x[3],
-                                                                       x[4], x[5], x[6], x[7]);
+          const int exact = detail::coplanarity_coefficient_sign_exact(i, {x[0], x[1], x[2], x[3]},
+                                                                       {x[4], x[5], x[6], x[7]});
           EXPECT_EQ(exact, z > 0 ? 1 : (z < 0 ? -1 : 0)) << far << " " << tiny << " " << i;
         }
       }

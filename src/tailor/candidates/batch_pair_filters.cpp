@@ -45,7 +45,7 @@ StepSign exact_lane_sign(const PairBatch& batch, int lane) {
     p[r] = Vec3(batch.coordinate[3 * r][lane], batch.coordinate[3 * r + 1][lane],
                 batch.coordinate[3 * r + 2][lane]);
   }
-  return coplanarity_sign(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
+  return coplanarity_sign({p[0], p[1], p[2], p[3]}, {p[4], p[5], p[6], p[7]});
 }
 
 void verdicts_with(Kernels kernels, PairKind kind, PairBatch& batch, PairFilters filters,

@@ -73,28 +73,33 @@ PairVerdict verdict(bool f_ok, const Cubic& f, bool undecided, PairFilters filte
 
 }  // namespace
 
-PairVerdict vertex_face_verdict(const Vec3& p_t0, const Vec3& a_t0, const Vec3& b_t0,
-                                const Vec3& c_t0, const Vec3& p_t1, const Vec3& a_t1,
-                                const Vec3& b_t1, const Vec3& c_t1, PairFilters filters) {
+PairVerdict vertex_face_verdict(const FourPoints& at_t0, const FourPoints& at_t1,
+                                PairFilters filters) {
+  const auto& [p_t0, a_t0, b_t0, c_t0] = at_t0;
+  const auto& [p_t1, a_t1, b_t1, c_t1] = at_t1;
   Cubic f;
   bool undecided = true;
-  const bool f_ok = coplanarity_cubic(a_t0, b_t0, c_t0, p_t0, a_t1, b_t1, c_t1, p_t1, f, undecided);
+  const bool f_ok =
+      coplanarity_cubic({a_t0, b_t0, c_t0, p_t0}, {a_t1, b_t1, c_t1, p_t1}, f, undecided);
   return verdict(
       f_ok, f, undecided, filters,
       [&] { return vertex_face_apart(p_t0, a_t0, b_t0, c_t0, p_t1, a_t1, b_t1, c_t1, f); },
-      [&] { return coplanarity_sign(a_t0, b_t0, c_t0, p_t0, a_t1, b_t1, c_t1, p_t1); });
+      [&] {
+        return coplanarity_sign({a_t0, b_t0, c_t0, p_t0}, {a_t1, b_t1, c_t1, p_t1});
+      });
 }
 
-PairVerdict edge_edge_verdict(const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0,
-                              const Vec3& d_t0, const Vec3& a_t1, const Vec3& b_t1,
-                              const Vec3& c_t1, const Vec3& d_t1, PairFilters filters) {
+PairVerdict edge_edge_verdict(const FourPoints& at_t0, const FourPoints& at_t1,
+                              PairFilters filters) {
+  const auto& [a_t0, b_t0, c_t0, d_t0] = at_t0;
+  const auto& [a_t1, b_t1, c_t1, d_t1] = at_t1;
   Cubic f;
   bool undecided = true;
-  const bool f_ok = coplanarity_cubic(a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1, d_t1, f, undecided);
+  const bool f_ok = coplanarity_cubic(at_t0, at_t1, f, undecided);
   return verdict(
       f_ok, f, undecided, filters,
       [&] { return edge_edge_apart(a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1, d_t1, f); },
-      [&] { return coplanarity_sign(a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1, d_t1); });
+      [&] { return coplanarity_sign(at_t0, at_t1); });
 }
 
 }  // namespace tailor

@@ -61,31 +61,22 @@ struct PairFilters {
 /// evaluated once for both filters; the tests run cheapest first: the DNF's certified
 /// double signs, the projection filter, and only then the DNF's exact evaluation (so a
 /// pair that both would cull is reported apart_in_projection).
-PairVerdict vertex_face_verdict(const Vec3& p_t0, const Vec3& a_t0, const Vec3& b_t0,
-                                const Vec3& c_t0, const Vec3& p_t1, const Vec3& a_t1,
-                                const Vec3& b_t1, const Vec3& c_t1, PairFilters filters);
+PairVerdict vertex_face_verdict(const FourPoints& at_t0, const FourPoints& at_t1,
+                                PairFilters filters);
 
 /// The verdict of the enabled filters for the closed segments `ab` and `cd`.
-PairVerdict edge_edge_verdict(const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0,
-                              const Vec3& d_t0, const Vec3& a_t1, const Vec3& b_t1,
-                              const Vec3& c_t1, const Vec3& d_t1, PairFilters filters);
+PairVerdict edge_edge_verdict(const FourPoints& at_t0, const FourPoints& at_t1,
+                              PairFilters filters);
 
 /// The projection filter alone: false only when vertex `p` certainly never touches the
 /// closed triangle `abc` (see the file comment); true when it may.
-inline bool vertex_face_may_touch_in_projection(const Vec3& p_t0, const Vec3& a_t0,
-                                                const Vec3& b_t0, const Vec3& c_t0,
-                                                const Vec3& p_t1, const Vec3& a_t1,
-                                                const Vec3& b_t1, const Vec3& c_t1) {
-  return vertex_face_verdict(p_t0, a_t0, b_t0, c_t0, p_t1, a_t1, b_t1, c_t1, {false, true}) ==
-         PairVerdict::may_touch;
+inline bool vertex_face_may_touch_in_projection(const FourPoints& at_t0, const FourPoints& at_t1) {
+  return vertex_face_verdict(at_t0, at_t1, {false, true}) == PairVerdict::may_touch;
 }
 
 /// The projection filter alone for the closed segments `ab` and `cd`.
-inline bool edge_edge_may_touch_in_projection(const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0,
-                                              const Vec3& d_t0, const Vec3& a_t1, const Vec3& b_t1,
-                                              const Vec3& c_t1, const Vec3& d_t1) {
-  return edge_edge_verdict(a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1, d_t1, {false, true}) ==
-         PairVerdict::may_touch;
+inline bool edge_edge_may_touch_in_projection(const FourPoints& at_t0, const FourPoints& at_t1) {
+  return edge_edge_verdict(at_t0, at_t1, {false, true}) == PairVerdict::may_touch;
 }
 
 }  // namespace tailor

@@ -88,12 +88,10 @@ inline Quadratic bracket(const Moving& e, const Moving& w, int k) {
 // The coplanarity cubic f = [b-a, c-a, d-a] with its certified bounds, from the DNF
 // filter's evaluation (whose middle coefficients are 3β1, 3β2). False when out of range.
 // `undecided` tells whether a coefficient's sign is beyond the bound.
-inline bool coplanarity_cubic(const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0,
-                              const Vec3& d_t0, const Vec3& a_t1, const Vec3& b_t1,
-                              const Vec3& c_t1, const Vec3& d_t1, Cubic& f, bool& undecided) {
+inline bool coplanarity_cubic(const FourPoints& at_t0, const FourPoints& at_t1, Cubic& f,
+                              bool& undecided) {
   double value[4], bound[4];
-  if (!detail::coplanarity_bernstein_double(a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1, d_t1, value,
-                                            bound)) {
+  if (!detail::coplanarity_bernstein_double(at_t0, at_t1, value, bound)) {
     return false;
   }
   undecided = false;

@@ -345,15 +345,16 @@ std::optional<Cubic> make_cubic(const CoplanarityBernstein& filter) {
 
 CoplanarityBernstein coplanarity_bernstein(const VertexFaceQuery& q) {
   CoplanarityBernstein r;
-  r.valid = coplanarity_bernstein_double(q.a_t0, q.b_t0, q.c_t0, q.p_t0, q.a_t1, q.b_t1, q.c_t1,
-                                         q.p_t1, r.value, r.bound);
+  r.valid = coplanarity_bernstein_double({q.a_t0, q.b_t0, q.c_t0, q.p_t0},
+                                         {q.a_t1, q.b_t1, q.c_t1, q.p_t1}, r.value, r.bound);
   return r;
 }
 
 CoplanarityBernstein coplanarity_bernstein(const EdgeEdgeQuery& q) {
   CoplanarityBernstein r;
-  r.valid = coplanarity_bernstein_double(q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1, q.ea1_t1,
-                                         q.eb0_t1, q.eb1_t1, r.value, r.bound);
+  r.valid =
+      coplanarity_bernstein_double({q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0},
+                                   {q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1}, r.value, r.bound);
   return r;
 }
 

@@ -65,7 +65,7 @@ StepSign MovingPlane::side(const Vec3& p_t0, const Vec3& p_t1) const {
     if (positive && negative) return StepSign::mixed;
     if (!undecided) return positive ? StepSign::positive : StepSign::negative;
   }
-  return coplanarity_sign(m_a0, p_t0, m_q0, m_r0, m_a1, p_t1, m_q1, m_r1);
+  return coplanarity_sign({m_a0, p_t0, m_q0, m_r0}, {m_a1, p_t1, m_q1, m_r1});
 }
 
 }  // namespace tailor

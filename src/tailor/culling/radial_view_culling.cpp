@@ -49,8 +49,8 @@ std::vector<Ghost> ghost_triangles(const std::vector<std::vector<Index>>& loops,
     const Vec3 centre0 = loop_centroid(x0, loop), centre1 = loop_centroid(x1, loop);
     for (std::size_t i = 0; i < loop.size(); ++i) {
       const Index u = loop[i], w = loop[(i + 1) % loop.size()];
-      const auto raw = static_cast<signed char>(
-          coplanarity_sign(x0.row(w), x0.row(u), centre0, o0, x1.row(w), x1.row(u), centre1, o1));
+      const auto raw = static_cast<signed char>(coplanarity_sign(
+          {x0.row(w), x0.row(u), centre0, o0}, {x1.row(w), x1.row(u), centre1, o1}));
       ghosts.push_back({u, w, centre0, centre1, raw});
     }
   }
@@ -170,9 +170,9 @@ signed char RadialViewCulling::raw_sign(Index c, Index f) const {
   const auto v = m_clusters.mesh().faces().row(f);
   const Positions& x0 = *m_x0;
   const Positions& x1 = *m_x1;
-  raw = static_cast<signed char>(coplanarity_sign(x0.row(v[0]), state.observer0, x0.row(v[1]),
-                                                  x0.row(v[2]), x1.row(v[0]), state.observer1,
-                                                  x1.row(v[1]), x1.row(v[2])));
+  raw = static_cast<signed char>(
+      coplanarity_sign({x0.row(v[0]), state.observer0, x0.row(v[1]), x0.row(v[2])},
+                       {x1.row(v[0]), state.observer1, x1.row(v[1]), x1.row(v[2])}));
   cached.store(raw, std::memory_order_relaxed);
   return raw;
 }

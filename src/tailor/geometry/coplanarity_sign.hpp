@@ -37,18 +37,16 @@ namespace detail {
 /// Exact sign (-1, 0, 1) of the Bernstein coefficient `index` (0..3) of f, up to the
 /// positive factor 3 for indices 1 and 2. Slow path (stack integers, GMP only for extreme
 /// exponent spreads); defined in the .cpp.
-int coplanarity_coefficient_sign_exact(int index, const Vec3& a_t0, const Vec3& b_t0,
-                                       const Vec3& c_t0, const Vec3& d_t0, const Vec3& a_t1,
-                                       const Vec3& b_t1, const Vec3& c_t1, const Vec3& d_t1);
+int coplanarity_coefficient_sign_exact(int index, const FourPoints& at_t0, const FourPoints& at_t1);
 
 /// The four Bernstein coefficients of f in double, `value[i]` (times 3 for i = 1, 2), each
 /// with a certified bound `bound[i]` on its absolute error. Returns false (and leaves the
 /// outputs unspecified) when an input difference is out of the guarded range or not
 /// finite; then the bound does not hold and the caller must use exact arithmetic.
-inline bool coplanarity_bernstein_double(const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0,
-                                         const Vec3& d_t0, const Vec3& a_t1, const Vec3& b_t1,
-                                         const Vec3& c_t1, const Vec3& d_t1, double value[4],
-                                         double bound[4]) {
+inline bool coplanarity_bernstein_double(const FourPoints& at_t0, const FourPoints& at_t1,
+                                         double value[4], double bound[4]) {
+  const auto& [a_t0, b_t0, c_t0, d_t0] = at_t0;
+  const auto& [a_t1, b_t1, c_t1, d_t1] = at_t1;
   // The 18 differences; one rounding each.
   double u0[3], v0[3], w0[3], u1[3], v1[3], w1[3];
   for (int k = 0; k < 3; ++k) {
@@ -114,12 +112,10 @@ inline bool coplanarity_bernstein_double(const Vec3& a_t0, const Vec3& b_t0, con
 
 /// Certified signs of the four Bernstein coefficients of f in double: each entry is -1,
 /// 0 (exactly zero) or 1 when certain, 2 when the error bound cannot decide.
-inline std::array<int, 4> coplanarity_coefficient_signs_double(const Vec3& a_t0, const Vec3& b_t0,
-                                                               const Vec3& c_t0, const Vec3& d_t0,
-                                                               const Vec3& a_t1, const Vec3& b_t1,
-                                                               const Vec3& c_t1, const Vec3& d_t1) {
+inline std::array<int, 4> coplanarity_coefficient_signs_double(const FourPoints& at_t0,
+                                                               const FourPoints& at_t1) {
   double value[4], bound[4];
-  if (!coplanarity_bernstein_double(a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1, d_t1, value, bound)) {
+  if (!coplanarity_bernstein_double(at_t0, at_t1, value, bound)) {
     return {2, 2, 2, 2};
   }
   std::array<int, 4> sign{};
@@ -142,11 +138,8 @@ inline std::array<int, 4> coplanarity_coefficient_signs_double(const Vec3& a_t0,
 /// Bernstein sign test of f over [0, 1] for points a, b, c, d moving linearly.
 /// The answer is exact: positive/negative only when all four Bernstein coefficients are
 /// strictly of that sign in exact arithmetic.
-inline StepSign coplanarity_sign(const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0,
-                                 const Vec3& d_t0, const Vec3& a_t1, const Vec3& b_t1,
-                                 const Vec3& c_t1, const Vec3& d_t1) {
-  std::array<int, 4> s =
-      detail::coplanarity_coefficient_signs_double(a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1, d_t1);
+inline StepSign coplanarity_sign(const FourPoints& at_t0, const FourPoints& at_t1) {
+  std::array<int, 4> s = detail::coplanarity_coefficient_signs_double(at_t0, at_t1);
   // Two certain opposite signs, or a certain zero, decide "mixed" without exact work.
   bool has_pos = false, has_neg = false, has_zero = false, has_unknown = false;
   for (int x : s) {
@@ -159,8 +152,7 @@ inline StepSign coplanarity_sign(const Vec3& a_t0, const Vec3& b_t0, const Vec3&
   if (has_unknown) {
     for (int i = 0; i < 4; ++i) {
       if (s[i] != 2) continue;
-      s[i] = detail::coplanarity_coefficient_sign_exact(i, a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1,
-                                                        d_t1);
+      s[i] = detail::coplanarity_coefficient_sign_exact(i, at_t0, at_t1);
       if (s[i] == 0) return StepSign::mixed;
       has_pos |= s[i] == 1;
       has_neg |= s[i] == -1;
@@ -172,10 +164,8 @@ inline StepSign coplanarity_sign(const Vec3& a_t0, const Vec3& b_t0, const Vec3&
 
 /// True when the four points may become coplanar during the step (the pair survives the
 /// filter); false when they certainly never do.
-inline bool may_become_coplanar(const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0,
-                                const Vec3& d_t0, const Vec3& a_t1, const Vec3& b_t1,
-                                const Vec3& c_t1, const Vec3& d_t1) {
-  return coplanarity_sign(a_t0, b_t0, c_t0, d_t0, a_t1, b_t1, c_t1, d_t1) == StepSign::mixed;
+inline bool may_become_coplanar(const FourPoints& at_t0, const FourPoints& at_t1) {
+  return coplanarity_sign(at_t0, at_t1) == StepSign::mixed;
 }
 
 }  // namespace tailor

@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products everywhere
+#include <array>
 #include <cstdint>
 
 namespace tailor {
@@ -13,6 +14,9 @@ using Index = std::int32_t;
 
 /// A 3D point or vector.
 using Vec3 = Eigen::Vector3d;
+/// Four points at one instant: a vertex and a face's corners, or the ends of two edges;
+/// the pair tests of a linear step take them at its start and at its end.
+using FourPoints = std::array<Vec3, 4>;
 
 /// Vertex positions, one row per vertex (docs/design.md §6).
 using Positions = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
