@@ -13,6 +13,7 @@ packages=(
   libeigen3-dev libtbb-dev libfmt-dev libspdlog-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev
   libpng-dev
+  doxygen  # the API reference and its warning check (make docs, scripts/check-docs.sh)
   # CHOLMOD orders the cloth systems (AMD / METIS) and factorises them on request
   # (ClothSolver::supernodal); OpenBLAS becomes the libblas.so.3 it calls there
   libsuitesparse-dev libopenblas0
