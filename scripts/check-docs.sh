@@ -21,8 +21,12 @@ doxygen docs/Doxyfile
 
 root="$(pwd)/"
 # One warning can continue over several lines; only the lines carrying "warning:" (or
-# "error:", a doc comment Doxygen could not parse) count. Printed sorted by file and line.
+# "error:", a doc comment Doxygen could not parse) count. Printed sorted by file and line,
+# each warning with its continuation lines (joined by \037 for the sort).
 count=$(grep -cE '(warning|error):' "$log" || true)
-sed "s|$root||" "$log" | sort -t: -k1,1 -k2,2n
+sed "s|$root||" "$log" |
+  awk '/^[^ ].*:[0-9]+: (warning|error):/ { if (NR > 1) printf "\n"; printf "%s", $0; next }
+       { printf "\037%s", $0 } END { if (NR > 0) printf "\n" }' |
+  sort -t: -k1,1 -k2,2n | tr '\037' '\n'
 echo "docs: $count warnings"
 [ "$count" -eq 0 ]
