@@ -7,7 +7,7 @@ CMAKE_ARGS ?=
 BUILD := build/release
 TAILOR := $(BUILD)/tailor
 
-.PHONY: deps build demo test bench asan fuzz clean
+.PHONY: deps build demo test bench asan fuzz docs clean
 
 deps:
 	@scripts/install-deps.sh
@@ -45,6 +45,11 @@ fuzz:
 	@cmake --preset fuzz >/dev/null
 	@cmake --build --preset fuzz -j $(JOBS)
 	@scripts/run-fuzzers.sh $(FUZZ_SECONDS) $(FUZZ_JOBS) $(FUZZ_TARGETS)
+
+## Doxygen API reference of the public headers (build/docs/html/index.html); fails on
+## any Doxygen warning, e.g. an undocumented public declaration (scripts/check-docs.sh).
+docs: deps
+	@scripts/check-docs.sh
 
 clean:
 	rm -rf build

@@ -14,6 +14,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev
   libpng-dev
   ffmpeg  # the rendered runs' animation.mp4 (src/tailor/render/animation.hpp)
+  doxygen  # the API reference and its warning check (make docs, scripts/check-docs.sh)
   # CHOLMOD orders the cloth systems (AMD / METIS) and factorises them on request
   # (ClothSolver::supernodal); OpenBLAS becomes the libblas.so.3 it calls there
   libsuitesparse-dev libopenblas0

@@ -13,7 +13,9 @@ namespace tailor {
 
 /// An axis-aligned box; empty when min > max.
 struct Aabb {
+  /// Lower corner (+inf on every axis when empty).
   Eigen::Array3d min = Eigen::Array3d::Constant(std::numeric_limits<double>::infinity());
+  /// Upper corner (-inf on every axis when empty).
   Eigen::Array3d max = Eigen::Array3d::Constant(-std::numeric_limits<double>::infinity());
 
   /// Grows the box to hold point `p`.
@@ -28,7 +30,9 @@ struct Aabb {
   }
   /// Closed-box overlap: boxes that touch overlap (touching can be a contact).
   bool overlaps(const Aabb& b) const { return (min <= b.max).all() && (b.min <= max).all(); }
+  /// Centre (min + max) / 2; meaningless for an empty box.
   Vec3 center() const { return (0.5 * (min + max)).matrix(); }
+  /// Extent max - min per axis (negative for an empty box).
   Vec3 diagonal() const { return (max - min).matrix(); }
 };
 

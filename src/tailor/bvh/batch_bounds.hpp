@@ -12,7 +12,9 @@ namespace tailor {
 /// range the bound is clamped to the largest float (then it no longer holds the corner,
 /// but overlaps of clamped boxes are kept, which is all the traversal asks of them).
 struct BatchBounds {
+  /// Lower bounds: low[k][i] for coordinate k of lane i.
   alignas(16) float low[3][MovingTriangleBatch::kCapacity];
+  /// Upper bounds: high[k][i] for coordinate k of lane i.
   alignas(16) float high[3][MovingTriangleBatch::kCapacity];
 };
 

@@ -21,12 +21,17 @@ class Bvh {
   /// Builds the tree top-down (build_median_split_layout on the box centres).
   explicit Bvh(std::span<const Aabb> primitive_boxes);
 
+  /// Number of nodes (2n - 1 for n primitives; 0 when empty).
   Index num_nodes() const { return static_cast<Index>(m_left.size()); }
+  /// Number of primitives (leaves).
   Index num_primitives() const { return static_cast<Index>(m_leaf_of_primitive.size()); }
+  /// True for a tree over no primitives.
   bool empty() const { return m_left.empty(); }
+  /// Whether `node` is a leaf (holds one primitive, no children).
   bool is_leaf(Index node) const { return m_left[node] < 0; }
-  /// Children of an inner node.
+  /// Left child of an inner node.
   Index left(Index node) const { return m_left[node]; }
+  /// Right child of an inner node.
   Index right(Index node) const { return m_right[node]; }
   /// Primitive of a leaf.
   Index primitive(Index node) const { return m_right[node]; }
@@ -41,6 +46,7 @@ class Bvh {
   /// Primitive ids in leaf order.
   const std::vector<Index>& primitive_order() const { return m_primitive_order; }
 
+  /// Box of a node: its primitive's box for a leaf, the union of its children's otherwise.
   const Aabb& box(Index node) const { return m_boxes[node]; }
   /// Sets every leaf box from `primitive_boxes` and refits inner nodes bottom-up (parallel).
   void refit(std::span<const Aabb> primitive_boxes);

@@ -21,7 +21,9 @@ struct BvhLayout {
   /// Primitives under each node (1 for a leaf).
   std::vector<Index> count;
 
+  /// Number of nodes (2n - 1 for n primitives).
   Index num_nodes() const { return static_cast<Index>(count.size()); }
+  /// Whether `node` is a leaf (count 1).
   bool is_leaf(Index node) const { return count[node] == 1; }
 };
 

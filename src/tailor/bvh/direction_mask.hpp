@@ -70,8 +70,11 @@ Vec3 mask_axis(DirectionMask mask);
 /// them is computed in vectorisable loops. Corner k ∈ {a, b, c} at frame s ∈ {0, 1},
 /// coordinate j is `coordinate[(3·s + k)·3 + j][i]` for triangle i.
 struct MovingTriangleBatch {
+  /// Most triangles a batch holds (lanes).
   static constexpr int kCapacity = 16;
+  /// Corner coordinates, one lane per triangle (layout above).
   alignas(64) double coordinate[18][kCapacity];
+  /// Number of triangles added (<= kCapacity).
   int count = 0;
 
   /// Appends a triangle moving from (a0, b0, c0) to (a1, b1, c1) (3 doubles each);

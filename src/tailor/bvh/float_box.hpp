@@ -28,9 +28,11 @@ inline float float_at_least(double x) {
 
 /// A closed box in float; empty when min > max.
 struct FloatBox {
+  /// Lower corner (+inf on every axis when empty).
   std::array<float, 3> min{std::numeric_limits<float>::infinity(),
                            std::numeric_limits<float>::infinity(),
                            std::numeric_limits<float>::infinity()};
+  /// Upper corner (-inf on every axis when empty).
   std::array<float, 3> max{-std::numeric_limits<float>::infinity(),
                            -std::numeric_limits<float>::infinity(),
                            -std::numeric_limits<float>::infinity()};

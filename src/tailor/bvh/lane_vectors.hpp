@@ -26,8 +26,11 @@ namespace tailor::lanes {
 /// alias declaration, but keeps it on a typedef.)
 template <class T, int N>
 struct LaneVectors {
+  /// Signed integer of T's width (the lane type of comparison masks).
   using Integer = std::conditional_t<sizeof(T) == 8, std::int64_t, std::int32_t>;
+  /// N lanes of T (a GCC vector type).
   typedef T Lanes __attribute__((vector_size(N * sizeof(T))));
+  /// N lanes of Integer: the result of comparing two Lanes (all bits set where true).
   typedef Integer Bits __attribute__((vector_size(N * sizeof(T))));
 };
 /// W doubles (W = 2, 4, 8).
@@ -37,6 +40,7 @@ using Vectors = LaneVectors<double, W>;
 template <int F>
 using FloatVectors = LaneVectors<float, F>;
 
+/// Loads W doubles from `p` (no alignment needed).
 template <int W>
 [[gnu::always_inline]] inline typename Vectors<W>::Lanes load(const double* p) {
   typename Vectors<W>::Lanes v;

@@ -49,11 +49,15 @@ class MeshBvh {
   /// Whether the boxes belong to the last refit (false after refit_directions()).
   bool boxes_current() const { return m_boxes_current; }
 
+  /// True for a tree over no faces.
   bool empty() const { return m_nodes.empty(); }
+  /// Number of nodes (2n - 1 for n faces).
   Index num_nodes() const { return static_cast<Index>(m_nodes.size()); }
+  /// Whether `node` is a leaf (holds one face).
   bool is_leaf(Index node) const { return m_nodes[node].count == 1; }
-  /// Children of an inner node.
+  /// Left child of an inner node (node + 1: pre-order numbering).
   Index left(Index node) const { return node + 1; }
+  /// Right child of an inner node.
   Index right(Index node) const { return m_nodes[node].right_or_face; }
   /// Number of faces under a node.
   Index size(Index node) const { return m_nodes[node].count; }
@@ -87,6 +91,7 @@ class MeshBvh {
     const std::uint64_t below = (std::uint64_t{1} << (node & 63)) - 1;
     return m_masks_before_word[word] + std::popcount(m_mask_bits[word] & below);
   }
+  /// Number of nodes that keep a direction mask (see has_mask()).
   Index num_masks() const { return static_cast<Index>(m_masks.size()); }
 
  private:

@@ -24,13 +24,18 @@ enum class PairKind : std::uint8_t { vertex_face, edge_edge };
 /// a vertex-face pair is the face's corners a, b, c and the vertex d; an edge-edge pair
 /// the edges ab and cd. Each pair carries two ids for its caller.
 struct PairBatch {
+  /// Most pairs a batch holds (lanes).
   static constexpr int kCapacity = 16;
   /// Row 3·(4·frame + point) + k: coordinate k of point 0-3 (a-d) at frame 0-1.
   alignas(64) double coordinate[24][kCapacity];
+  /// First id of each pair (the caller's; the filters do not read it).
   Index first_id[kCapacity];
+  /// Second id of each pair (likewise).
   Index second_id[kCapacity];
+  /// Number of pairs added (<= kCapacity).
   int count = 0;
 
+  /// Whether no more pairs fit (count == kCapacity).
   bool full() const { return count == kCapacity; }
   /// Appends a pair (count < kCapacity): points[p] at t = 0 and t = 1 (three doubles each).
   void add(Index first, Index second, const double* const (&t0)[4], const double* const (&t1)[4]) {

@@ -43,17 +43,21 @@ class FeatureAssignment {
   };
 
   FeatureAssignment() = default;
+  /// Assigns greedily in face order: each face takes the vertices and edges no earlier face
+  /// took. Keeps a pointer to `mesh`, which must outlive it.
   explicit FeatureAssignment(const TriangleMesh& mesh);
 
   /// Triangle a vertex is assigned to (-1 for an unreferenced vertex).
   Index vertex_owner(Index v) const { return m_vertex_owner[v]; }
   /// Triangle an edge is assigned to.
   Index edge_owner(Index e) const { return m_edge_owner[e]; }
-  /// Number of vertices / edges assigned to face `f`.
+  /// Number of vertices assigned to face `f` (0-3).
   int vertices_assigned(Index f) const;
+  /// Number of edges assigned to face `f` (0-3).
   int edges_assigned(Index f) const;
-  /// Whether face `f` owns its corner `k` (faces(f, k)) / its edge `k` (face_edges(f)[k]).
+  /// Whether face `f` owns its corner `k` (faces(f, k)), k in 0-2.
   bool owns_corner(Index f, int k) const { return (m_owned[f] >> k) & 1; }
+  /// Whether face `f` owns its edge `k` (face_edges(f)[k]), k in 0-2.
   bool owns_edge(Index f, int k) const { return (m_owned[f] >> (3 + k)) & 1; }
   /// The two corners of owner(v) other than v (-1 for an unreferenced vertex).
   const std::array<Index, 2>& owner_other_corners(Index v) const { return m_owner_others[v]; }

@@ -22,7 +22,9 @@ std::pair<Index, Index> first_disjoint_face_pair(const TriangleMesh& mesh, Index
 /// vertex whose every pair of incident faces shares a vertex. No triangle pair covering
 /// them is ever emitted when adjacent pairs are culled, so they are tested directly.
 struct IsolatedSet {
+  /// The isolated vertex-face pairs.
   std::vector<VertexFacePair> vertex_face;
+  /// The isolated edge-edge pairs.
   std::vector<EdgeEdgePair> edge_edge;
 
   /// Enumerates the set from topology alone (parallel, deterministic order).

@@ -8,12 +8,18 @@ namespace tailor {
 
 /// A vertex-face candidate pair.
 struct VertexFacePair {
+  ///@{
+  /// Vertex id and face id (-1 when unset).
   Index vertex = -1, face = -1;
+  ///@}
 };
 
 /// An edge-edge candidate pair of edge ids, `edge_a < edge_b`.
 struct EdgeEdgePair {
+  ///@{
+  /// Edge ids (-1 when unset).
   Index edge_a = -1, edge_b = -1;
+  ///@}
 };
 
 }  // namespace tailor

@@ -32,10 +32,23 @@ struct LowLevelOptions {
 /// VF and EE pair counts after each low-level stage.
 struct LowLevelCounts {
   std::int64_t triangle_pairs_separated = 0;  ///< CTPs the triangle filter dropped whole
+  ///@{
+  /// Pairs the feature assignment owed to the candidate triangle pairs (and the isolated set).
   std::int64_t vf_generated = 0, ee_generated = 0;
+  ///@}
+  ///@{
+  /// Pairs whose swept boxes overlap (all of them when that stage is off).
   std::int64_t vf_after_boxes = 0, ee_after_boxes = 0;
+  ///@}
+  ///@{
+  /// Pairs left after the triangle filter and the non-coplanarity (DNF) filter.
   std::int64_t vf_after_filter = 0, ee_after_filter = 0;
+  ///@}
+  ///@{
+  /// Pairs left after the projection filter: the candidates for the exact CCD.
   std::int64_t vf_after_projection = 0, ee_after_projection = 0;
+  ///@}
+  /// Adds `other` field by field (summing the per-thread counts).
   LowLevelCounts& operator+=(const LowLevelCounts& other);
 };
 
@@ -46,6 +59,8 @@ struct LowLevelCounts {
 class PrimitivePairGenerator {
  public:
   PrimitivePairGenerator() = default;
+  /// A generator for `mesh` (kept by pointer: it must outlive the generator), with its
+  /// FeatureAssignment built.
   explicit PrimitivePairGenerator(const TriangleMesh& mesh);
 
   /// Starts a step: no pairs, zero counts.
@@ -59,22 +74,30 @@ class PrimitivePairGenerator {
   void add_isolated(const IsolatedSet& isolated, const Positions& x0, const Positions& x1,
                     const LowLevelOptions& options);
 
-  /// The surviving pairs since clear_pairs(), by blocks; the sets do not depend on the
-  /// thread count (the order does).
+  /// The surviving vertex-face pairs since clear_pairs(), by blocks (one per thread that
+  /// has some); the set does not depend on the thread count (the order does).
   std::vector<std::span<const VertexFacePair>> vertex_face_blocks() const;
+  /// The surviving edge-edge pairs since clear_pairs(), by blocks (as vertex_face_blocks()).
   std::vector<std::span<const EdgeEdgePair>> edge_edge_blocks() const;
   /// Counts since begin_step().
   LowLevelCounts counts() const;
 
+  /// The feature assignment that decides which triangle pair tests each feature pair.
   const FeatureAssignment& assignment() const { return m_assignment; }
 
   /// What one thread generates: the surviving pairs, its counts, and the pairs waiting
   /// for the filters (batch_pair_filters.hpp).
   struct ThreadOutput {
+    /// Surviving vertex-face pairs.
     std::vector<VertexFacePair> vertex_face;
+    /// Surviving edge-edge pairs.
     std::vector<EdgeEdgePair> edge_edge;
+    /// This thread's counts.
     LowLevelCounts counts;
+    ///@{
+    /// Pairs waiting for the filters, one batch per kind.
     PairBatch vertex_face_batch, edge_edge_batch;
+    ///@}
   };
 
  private:

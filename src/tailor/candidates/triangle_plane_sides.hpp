@@ -56,7 +56,9 @@ namespace tailor {
 /// plane during the whole step (the plane's normal is (b - a) × (c - a) in the face's
 /// corner order); a corner with neither bit may cross it, or could not be certified.
 struct TrianglePairSides {
+  /// Corners certainly strictly above the other face's plane (bits as above).
   std::uint8_t above = 0;
+  /// Corners certainly strictly below the other face's plane.
   std::uint8_t below = 0;
 
   /// Bit of corner k of the second face against the first face's plane.

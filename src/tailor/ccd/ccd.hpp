@@ -32,19 +32,32 @@ struct CcdResult {
   /// Time of impact when hit: never later than the earliest true contact and within 1e-6
   /// of it. 1 when there is no hit.
   double toi = 1.0;
+  /// The stage that decided the query.
   CcdPath path = CcdPath::filter;
 };
 
 /// A vertex-face query: `p` against triangle `(a, b, c)`, each at t=0 and t=1.
 struct VertexFaceQuery {
+  ///@{
+  /// Vertex and triangle corners at t=0.
   Vec3 p_t0, a_t0, b_t0, c_t0;
+  ///@}
+  ///@{
+  /// Vertex and triangle corners at t=1.
   Vec3 p_t1, a_t1, b_t1, c_t1;
+  ///@}
 };
 
 /// An edge-edge query: edge `(a0, a1)` against edge `(b0, b1)`, each at t=0 and t=1.
 struct EdgeEdgeQuery {
+  ///@{
+  /// Endpoints of edge a and edge b at t=0.
   Vec3 ea0_t0, ea1_t0, eb0_t0, eb1_t0;
+  ///@}
+  ///@{
+  /// Endpoints of edge a and edge b at t=1.
   Vec3 ea0_t1, ea1_t1, eb0_t1, eb1_t1;
+  ///@}
 };
 
 /// Does the point meet the closed triangle at some t in [0, 1]? Exact on the input doubles

@@ -30,17 +30,19 @@ struct TraversalOptions {
 
 /// Counts of one traversal.
 struct TraversalCounts {
-  std::int64_t node_pairs_visited = 0;
+  std::int64_t node_pairs_visited = 0;    ///< node pairs whose boxes were compared
+  /// Nodes whose self-test a normal cone skipped (certified by the contour test when on).
   std::int64_t nodes_culled_by_cones = 0;
-  std::int64_t contour_tests = 0;
-  std::int64_t contour_tests_failed = 0;
+  std::int64_t contour_tests = 0;          ///< contour tests run (one per cone that held)
+  std::int64_t contour_tests_failed = 0;   ///< contour tests that could not certify
+  /// Adds `other` field by field (summing the per-thread counts).
   TraversalCounts& operator+=(const TraversalCounts& other);
 };
 
 /// The positions of one step, as the traversal sees them.
 struct StepPositions {
-  const Positions& x0;
-  const Positions& x1;
+  const Positions& x0;  ///< vertex positions at the start of the step (t=0)
+  const Positions& x1;  ///< vertex positions at the end of the step (t=1)
 };
 
 /// Collects the candidate triangle pairs (CTPs) of a step from BVH self-traversals. The pairs stay
@@ -49,6 +51,7 @@ struct StepPositions {
 /// (clear()) or are freed as they are consumed (consume()).
 class CandidateTraversal {
  public:
+  /// A traversal of `mesh`'s BVHs (kept by pointer: `mesh` must outlive it).
   explicit CandidateTraversal(const TriangleMesh& mesh) : m_mesh(&mesh) {}
 
   /// Forgets the previous step's pairs and counts (keeping the memory).

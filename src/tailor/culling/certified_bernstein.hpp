@@ -25,8 +25,8 @@ template <int N>
 struct CertifiedBernstein {
   // Left uninitialised by default: filled by aggregate initialisation or split() (the
   // filters build millions of these per step).
-  std::array<double, N + 1> value;
-  std::array<double, N + 1> bound;
+  std::array<double, N + 1> value;  ///< Bernstein coefficients, as computed
+  std::array<double, N + 1> bound;  ///< bound[i] >= |error of value[i]| (>= 0)
 
   /// +1 / -1 when p is certainly of that strict sign on all of [lo, hi] (dyadic, within
   /// [0, 1], at most 8 fraction bits), 0 when this cannot be certified.

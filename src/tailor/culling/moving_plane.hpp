@@ -25,6 +25,7 @@ namespace tailor {
 class MovingPlane {
  public:
   MovingPlane() = default;
+  /// The plane through `a`, `q`, `r`, each moving linearly from its t0 to its t1 position.
   MovingPlane(const Vec3& a_t0, const Vec3& q_t0, const Vec3& r_t0, const Vec3& a_t1,
               const Vec3& q_t1, const Vec3& r_t1);
 

@@ -46,7 +46,9 @@ class RadialViewClusters {
   RadialViewClusters(const TriangleMesh& mesh, const Positions& x_build,
                      std::vector<std::vector<Index>> section_loops);
 
+  /// The mesh the clusters were built on.
   const TriangleMesh& mesh() const { return *m_mesh; }
+  /// Number of clusters: one per observer (section loop).
   Index num_clusters() const { return static_cast<Index>(m_cluster_faces.size()); }
   /// Faces of cluster `c`, ascending.
   const std::vector<Index>& faces(Index c) const { return m_cluster_faces[c]; }

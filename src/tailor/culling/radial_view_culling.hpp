@@ -98,6 +98,7 @@ class RadialViewCulling {
   RadialViewCulling(const TriangleMesh& mesh, const Positions& x_build,
                     std::vector<std::vector<Index>> section_loops);
 
+  /// The clusters the classification works on.
   const RadialViewClusters& clusters() const { return m_clusters; }
 
   /// Classifies every cluster over the step from `x0` to `x1` (parallel over clusters).

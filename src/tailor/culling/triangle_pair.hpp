@@ -8,7 +8,10 @@ namespace tailor {
 
 /// A candidate triangle pair (CTP) of face ids, `first < second`.
 struct TrianglePair {
+  ///@{
+  /// Face ids (-1 when unset).
   Index first = -1, second = -1;
+  ///@}
 };
 
 }  // namespace tailor

@@ -14,7 +14,9 @@ namespace tailor {
 
 /// The VF and EE queries of one step.
 struct StepCcdQueries {
+  /// The vertex-face queries.
   std::vector<VertexFaceQuery> vertex_face;
+  /// The edge-edge queries.
   std::vector<EdgeEdgeQuery> edge_edge;
 };
 

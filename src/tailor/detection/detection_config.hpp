@@ -36,11 +36,11 @@ enum class SettingEffect {
 /// Upper bound of a setting without one.
 inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
-// Every setting of DetectionConfig, once, in declaration order:
-//   SWITCH(name, default, cli, effect, help)                  a bool: --cli / --no-cli
-//   NUMBER(type, name, default, min, max, cli, effect, help)  an int or double: --cli VALUE
-// `cli` is the command-line spelling ("" when the CLI sets it itself); `effect` a
-// SettingEffect; `help` one line, without a final period. The defaults are the `paper` preset.
+/// Every setting of DetectionConfig, once, in declaration order:
+///   SWITCH(name, default, cli, effect, help)                  a bool: --cli / --no-cli
+///   NUMBER(type, name, default, min, max, cli, effect, help)  an int or double: --cli VALUE
+/// `cli` is the command-line spelling ("" when the CLI sets it itself); `effect` a
+/// SettingEffect; `help` one line, without a final period. The defaults are the `paper` preset.
 // clang-format off
 #define TAILOR_DETECTION_SETTINGS(SWITCH, NUMBER)                                                 \
   SWITCH(normal_cones, true, "cones", work_only,                                                  \
@@ -104,7 +104,10 @@ struct DetectionSetting {
   std::string_view name;         ///< the member's name (C++, Python, JSON key)
   DetectionConfigMember member;  ///< the member itself
   std::string_view cli;          ///< `--cli`/`--no-cli` or `--cli VALUE`; empty: not on the CLI
-  double min = 0, max = 1;       ///< accepted values (a switch: 0 and 1)
+  ///@{
+  /// Accepted range, inclusive (a switch: 0 and 1; max may be kUnbounded).
+  double min = 0, max = 1;
+  ///@}
   SettingEffect effect = SettingEffect::work_only;  ///< what it can change
   std::string_view help;                            ///< one line
 };

@@ -14,12 +14,12 @@
 
 namespace tailor {
 
-// Every field of DetectionStats, once, in declaration order:
-//   COUNT(name, stage, help)  an exact count (std::int64_t)
-//   TIME(name, stage, help)   a time in milliseconds (double)
-// `stage` names the pipeline stage that fills it (docs/design.md §1); `help` is one line,
-// without a final period. A new counter also needs the line that fills it (stage_stats.cpp
-// or the detector).
+/// Every field of DetectionStats, once, in declaration order:
+///   COUNT(name, stage, help)  an exact count (std::int64_t)
+///   TIME(name, stage, help)   a time in milliseconds (double)
+/// `stage` names the pipeline stage that fills it (docs/design.md §1); `help` is one line,
+/// without a final period. A new counter also needs the line that fills it (stage_stats.cpp
+/// or the detector).
 // clang-format off
 #define TAILOR_DETECTION_STATS(COUNT, TIME)                                                       \
   COUNT(boxes_refitted, "refit",                                                                  \
@@ -87,6 +87,7 @@ struct DetectionStatField {
   DetectionStatsMember member;  ///< the member itself
   std::string_view stage;       ///< the stage that fills it
   std::string_view help;        ///< one line
+  /// True for a time in milliseconds (a double), false for a count.
   bool is_time() const { return std::holds_alternative<double DetectionStats::*>(member); }
 };
 

@@ -22,17 +22,24 @@ namespace tailor {
 
 /// One cloth-obstacle collision.
 struct ObstacleCollision {
+  /// Which primitives of the cloth and the obstacle touch.
   enum Kind : int {
     vertex_face = 0,  ///< cloth vertex `cloth` vs obstacle face `obstacle`
     face_vertex = 1,  ///< cloth face `cloth` vs obstacle vertex `obstacle`
     edge_edge = 2,    ///< cloth edge `cloth` vs obstacle edge `obstacle`
   };
+  /// The kind of pair; it says what `cloth` and `obstacle` are.
   Kind kind = vertex_face;
+  ///@{
+  /// Vertex, face or edge id on the cloth and on the obstacle mesh (see Kind).
   Index cloth = -1, obstacle = -1;
+  ///@}
   double toi = 1;  ///< never later than the earliest contact (the exact CCD's)
+  /// Orders by (kind, cloth, obstacle).
   friend bool operator<(const ObstacleCollision& x, const ObstacleCollision& y) {
     return std::tie(x.kind, x.cloth, x.obstacle) < std::tie(y.kind, y.cloth, y.obstacle);
   }
+  /// Same kind and primitives (toi is not compared).
   friend bool operator==(const ObstacleCollision& x, const ObstacleCollision& y) {
     return x.kind == y.kind && x.cloth == y.cloth && x.obstacle == y.obstacle;
   }

@@ -18,7 +18,9 @@ namespace tailor {
 
 /// Result of one step: the exact collisions and per-stage statistics.
 struct DetectionResult {
+  /// Every collision of the step (exact).
   CollisionSet collisions;
+  /// Per-stage counts and times of the step.
   DetectionStats stats;
   /// The candidate triangle pairs of the step (only with DetectionConfig::keep_candidate_pairs).
   std::vector<TrianglePair> candidate_triangle_pairs;
@@ -36,7 +38,9 @@ class SelfCollisionDetector {
                         DetectionConfig config = DetectionConfig::preset("paper"),
                         std::vector<std::vector<Index>> section_loops = {});
   ~SelfCollisionDetector();
+  /// Moves the detector; the moved-from one may only be destroyed or assigned to.
   SelfCollisionDetector(SelfCollisionDetector&&) noexcept;
+  /// Move assignment (as the move constructor).
   SelfCollisionDetector& operator=(SelfCollisionDetector&&) noexcept;
 
   /// All VF and EE pairs that touch at some t in [0, 1] while vertices move from `x0`
@@ -49,7 +53,9 @@ class SelfCollisionDetector {
   /// (DetectionStats::boxes_refitted).
   DetectionResult detect(const Positions& x0, const Positions& x1);
 
+  /// The settings the detector was built with.
   const DetectionConfig& config() const;
+  /// The mesh given to the constructor.
   const TriangleMesh& mesh() const;
 
  private:

@@ -56,16 +56,21 @@ struct FrameCheck {
 /// One step k → k+1: its collisions and the static check of both frames.
 struct StepCheck {
   Index step = -1;          ///< k, the position of the step's first frame
-  FrameCheck start, end;    ///< frames k and k+1 (start repeats the previous step's end)
+  ///@{
+  /// Frames k and k+1 (start repeats the previous step's end).
+  FrameCheck start, end;
+  ///@}
   CollisionSet collisions;  ///< every VF and EE collision of the step (exact)
   DetectionStats stats;     ///< the detector's per-stage counts and times
   double read_wait_ms = 0;  ///< time spent waiting for frame k+1 (reading not overlapped)
   double detect_ms = 0;     ///< wall time of the detection
   double total_ms = 0;      ///< wall time of the whole step (wait, detection, static check)
 
+  /// Number of vertex-face collisions of the step.
   std::int64_t vf_collisions() const {
     return static_cast<std::int64_t>(collisions.vertex_face.size());
   }
+  /// Number of edge-edge collisions of the step.
   std::int64_t ee_collisions() const {
     return static_cast<std::int64_t>(collisions.edge_edge.size());
   }
@@ -117,7 +122,9 @@ class SequenceChecker {
   explicit SequenceChecker(FrameSequence frames, std::optional<FrameSequence> obstacle = {},
                            SequenceCheckOptions options = {});
   ~SequenceChecker();
+  /// Moves the checker; the moved-from one may only be destroyed or assigned to.
   SequenceChecker(SequenceChecker&&) noexcept;
+  /// Move assignment (as the move constructor).
   SequenceChecker& operator=(SequenceChecker&&) noexcept;
 
   /// The next step, or std::nullopt after the last one.
@@ -127,12 +134,15 @@ class SequenceChecker {
   const FrameCheck& first_frame_check() const;
   /// Totals so far.
   const SequenceSummary& summary() const;
-  /// First and last frame of the range (inclusive), and the number of steps in it.
+  /// First frame of the range.
   Index first_frame() const;
+  /// Last frame of the range (inclusive).
   Index last_frame() const;
+  /// Number of steps in the range: last_frame() - first_frame().
   Index num_steps() const;
-  /// The checked sequence and the cloth's connectivity.
+  /// The checked sequence.
   const FrameSequence& frames() const;
+  /// The cloth's connectivity (the faces of the first frame).
   const TriangleMesh& mesh() const;
   /// The obstacle sequence, or nullptr.
   const FrameSequence* obstacle() const;

@@ -17,9 +17,10 @@ namespace tailor {
 
 /// Longest PLY header line; a binary file without a newline is refused that soon.
 inline constexpr std::size_t kMaxPlyHeaderLineBytes = std::size_t{64} << 10;
-/// Most elements in a header, and properties per element (the duplicate-name checks are
-/// quadratic in these counts; real files have a handful).
+/// Most elements in a header (the duplicate-name checks are quadratic in this count; real
+/// files have a handful).
 inline constexpr std::size_t kMaxPlyElements = 256;
+/// Most properties per element (likewise).
 inline constexpr std::size_t kMaxPlyPropertiesPerElement = 256;
 
 /// What the body reader does with a property's values.

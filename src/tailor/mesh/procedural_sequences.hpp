@@ -11,7 +11,9 @@ namespace tailor {
 
 /// Frames of one animated mesh plus what is known about each frame by construction.
 struct ProceduralSequence {
+  /// Connectivity shared by every frame.
   FaceArray faces;
+  /// Vertex positions of each frame.
   std::vector<Positions> frames;
   /// Per frame: true when the frame intersects itself (by construction, see the generator).
   std::vector<bool> intersecting;

@@ -11,8 +11,12 @@ namespace tailor {
 
 /// One deforming step: connectivity plus positions at t=0 and t=1.
 struct ProceduralStep {
+  /// Connectivity.
   FaceArray faces;
+  ///@{
+  /// Vertex positions at t=0 and at t=1.
   Positions x0, x1;
+  ///@}
 };
 
 /// A contact-heavy step: a square cloth resting on a sphere of radius 1 whose top is cut

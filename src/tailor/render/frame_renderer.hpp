@@ -14,25 +14,25 @@ namespace tailor {
 
 /// Colours and size of the pictures.
 struct RenderSettings {
-  int width = 1280;  ///< output pixels
-  int height = 720;
-  int supersample = 2;         ///< anti-aliasing: rendered at this factor, then box-filtered
-  ShadingOptions shading;      ///< smooth (crease-aware) by default
-  Vec3 view{0.25, 1.0, 0.65};  ///< from the scene towards the camera
-  Vec3 up{0, 0, -1};           ///< image up (projected)
-  Rgb background{245, 245, 242};
-  Rgb arm{222, 178, 150};
-  Rgb cloth_outside{70, 110, 170};
-  Rgb cloth_inside{150, 170, 200};
-  Rgb candidate{215, 30, 30};  ///< faces in a candidate triangle pair
+  int width = 1280;                 ///< output width in pixels
+  int height = 720;                 ///< output height in pixels
+  int supersample = 2;              ///< anti-aliasing: rendered at this factor, then box-filtered
+  ShadingOptions shading;           ///< smooth (crease-aware) by default
+  Vec3 view{0.25, 1.0, 0.65};       ///< from the scene towards the camera
+  Vec3 up{0, 0, -1};                ///< image up (projected)
+  Rgb background{245, 245, 242};    ///< where nothing is drawn
+  Rgb arm{222, 178, 150};           ///< the arm's skin
+  Rgb cloth_outside{70, 110, 170};  ///< the sleeve's outer side (where face normals point)
+  Rgb cloth_inside{150, 170, 200};  ///< the sleeve's inner side
+  Rgb candidate{215, 30, 30};       ///< faces in a candidate triangle pair
 };
 
 /// What one picture shows. Arm and cloth are optional (null: not drawn).
 struct FrameView {
-  const Positions* arm = nullptr;
-  const FaceArray* arm_faces = nullptr;
-  const Positions* cloth = nullptr;
-  const FaceArray* cloth_faces = nullptr;
+  const Positions* arm = nullptr;          ///< the arm's vertices (null: no arm)
+  const FaceArray* arm_faces = nullptr;    ///< the arm's faces
+  const Positions* cloth = nullptr;        ///< the cloth's vertices (null: no cloth)
+  const FaceArray* cloth_faces = nullptr;  ///< the cloth's faces
   /// Cloth faces drawn in the candidate colour (ids out of range are ignored).
   std::vector<Index> highlighted_faces;
 };

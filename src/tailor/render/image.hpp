@@ -12,7 +12,11 @@ namespace tailor {
 
 /// One pixel.
 struct Rgb {
+  ///@{
+  /// Red, green and blue, 0-255 (sRGB as written to the PNG).
   std::uint8_t r = 0, g = 0, b = 0;
+  ///@}
+  /// Equal channels.
   friend bool operator==(const Rgb&, const Rgb&) = default;
 };
 
@@ -24,10 +28,13 @@ class Image {
   /// over 2^14 per side.
   Image(int width, int height, Rgb fill = {});
 
+  /// Width in pixels.
   int width() const { return m_width; }
+  /// Height in pixels.
   int height() const { return m_height; }
   /// Pixel (x, y); no bounds check.
   Rgb& at(int x, int y) { return m_pixels[static_cast<std::size_t>(y) * m_width + x]; }
+  /// Pixel (x, y), read only; no bounds check.
   const Rgb& at(int x, int y) const { return m_pixels[static_cast<std::size_t>(y) * m_width + x]; }
   /// Number of pixels equal to `colour`.
   std::int64_t count(Rgb colour) const;

@@ -14,10 +14,10 @@ namespace tailor {
 
 /// A pinhole camera looking from `eye` at `target`.
 struct Camera {
-  Vec3 eye{0, 0, 1};
-  Vec3 target = Vec3::Zero();
-  Vec3 up = Vec3::UnitY();
-  double fov_y_deg = 30;  ///< vertical field of view
+  Vec3 eye{0, 0, 1};           ///< where the camera is
+  Vec3 target = Vec3::Zero();  ///< the point at the image's centre
+  Vec3 up = Vec3::UnitY();     ///< the direction that appears up (projected)
+  double fov_y_deg = 30;       ///< vertical field of view
 
   /// A camera looking at the centre of the box [lo, hi] from direction `view` (from the
   /// target towards the eye), just far enough that every corner of the box projects inside
@@ -29,8 +29,8 @@ struct Camera {
 /// Colours of one mesh: a face's colour on the side its normal points to (front) and on
 /// the other side (back).
 struct MeshStyle {
-  std::function<Rgb(Index face)> front;
-  std::function<Rgb(Index face)> back;
+  std::function<Rgb(Index face)> front;  ///< colour of a face seen from its normal's side
+  std::function<Rgb(Index face)> back;   ///< colour of a face seen from behind
 };
 
 /// How a mesh's faces are shaded.

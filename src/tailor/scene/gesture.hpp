@@ -11,7 +11,9 @@ namespace tailor {
 
 /// One keyframe: the pose reached at `time` (s).
 struct Keyframe {
+  /// Time at which the pose is reached (s).
   double time = 0;
+  /// Joint angles at that time.
   ArmPose pose;
 };
 

@@ -36,10 +36,15 @@ namespace tailor {
 
 /// Every setting of a scene, with the defaults of the demo run.
 struct SceneConfig {
+  /// The arm: bone lengths, radii and tessellation.
   ArmParams arm;
+  /// The gesture the arm plays.
   GestureParams gesture;
+  /// The sleeve: size and resolution.
   SleeveParams sleeve;
+  /// The cloth material.
   ClothMaterial material;
+  /// Contact handling; thickness 2 mm by default.
   ContactParams contact = [] {
     ContactParams p;
     p.thickness = 2e-3;  // 2 mm: thick enough for the default resolution's 1-3 cm edges

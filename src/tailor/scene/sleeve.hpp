@@ -25,6 +25,7 @@ struct SleeveParams {
 /// shoulder end (pinned to the arm), ring `rings - 1` the wrist end. Faces are oriented
 /// with outward normals.
 struct Sleeve {
+  /// The parameters it was built with.
   SleeveParams params;
   Positions rest;                      ///< rest (and initial) positions
   std::shared_ptr<TriangleMesh> mesh;  ///< fixed connectivity

@@ -54,8 +54,11 @@ double face_clearance_margin(double min_arm_radius, double longest_rest_edge, do
 
 /// The implicit arm over one substep: its skeleton at the start and at the end.
 struct ArmMotion {
+  /// The arm (shape and skinning).
   const Arm& arm;
+  /// Skeleton at the start of the substep.
   const ArmSkeleton& skeleton0;
+  /// Skeleton at the end of the substep.
   const ArmSkeleton& skeleton1;
 };
 

@@ -24,6 +24,7 @@ namespace tailor {
 /// `analyze` once per pattern, then `factorize` and `solve` for each matrix of that pattern.
 class BlockCholesky {
  public:
+  /// The matrices it factorises: column-major, int indices.
   using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
   /// Symbolic analysis of `A`'s pattern: A is square with 3k rows, both triangles stored,

@@ -13,22 +13,28 @@ namespace tailor {
 /// holds a vertex's mass, its own stiffness and its contact spring exactly.
 class BlockJacobi {
  public:
+  /// Index type (Eigen preconditioner interface).
   using StorageIndex = int;
   enum { ColsAtCompileTime = Eigen::Dynamic, MaxColsAtCompileTime = Eigen::Dynamic };
 
   BlockJacobi() = default;
+  /// Computes the preconditioner of `m` (see compute()).
   template <typename M>
   explicit BlockJacobi(const M& m) {
     compute(m);
   }
+  /// Nothing to do: the blocks depend on the values only.
   template <typename M>
   BlockJacobi& analyzePattern(const M&) {
     return *this;
   }
+  /// Same as compute().
   template <typename M>
   BlockJacobi& factorize(const M& m) {
     return compute(m);
   }
+  /// Inverts each 3x3 diagonal block of `m` (3k rows); a singular block is replaced by
+  /// the identity.
   template <typename M>
   BlockJacobi& compute(const M& m) {
     const Eigen::Index n = m.rows() / 3;
@@ -47,6 +53,7 @@ class BlockJacobi {
     }
     return *this;
   }
+  /// Applies the preconditioner: each 3-row segment of `b` times its inverted block.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const {
     Eigen::VectorXd x(b.size());
     for (std::size_t i = 0; i < m_inverse.size(); ++i) {
@@ -55,6 +62,7 @@ class BlockJacobi {
     }
     return x;
   }
+  /// Always Eigen::Success (singular blocks fall back to the identity).
   Eigen::ComputationInfo info() const { return Eigen::Success; }
 
  private:

@@ -51,6 +51,7 @@ struct LinearSolveInfo {
 /// attempt, 2026-11-24, asked for 1e-10 within 25 iterations and missed in 198 of 240).
 class ClothLinearSolver {
  public:
+  /// The system matrices: column-major, int indices.
   using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
   /// Systems with at most this many unknowns use a factorisation, larger ones

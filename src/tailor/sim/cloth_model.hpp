@@ -22,7 +22,10 @@ namespace tailor {
 
 /// Energies of a state (J).
 struct ClothEnergy {
+  ///@{
+  /// Kinetic, gravitational potential, membrane (in-plane) and bending energy (J).
   double kinetic = 0, gravity = 0, membrane = 0, bending = 0;
+  ///@}
   /// Sum of all four.
   double total() const { return kinetic + gravity + membrane + bending; }
 };
@@ -42,8 +45,11 @@ struct ClothEnergy {
 struct ContactPlane {
   /// Slip speed (m/s) below which a contact counts as sticking.
   static constexpr double kStickSpeed = 1e-3;
+  /// The cloth vertex held.
   Index vertex = -1;
+  /// Unit normal of the plane, pointing out of the obstacle.
   Vec3 normal = Vec3::UnitY();
+  /// A point of the plane (m).
   Vec3 point = Vec3::Zero();
   double stiffness = 0;          ///< N/m
   double friction = 0;           ///< Coulomb coefficient μ
@@ -83,7 +89,9 @@ class ClothModel {
   ClothModel(const TriangleMesh& mesh, const Positions& rest, const ClothMaterial& material,
              const Positions* warp = nullptr);
   ~ClothModel();
+  /// Moves the model; the moved-from one may only be destroyed or assigned to.
   ClothModel(ClothModel&&) noexcept;
+  /// Move assignment (as the move constructor).
   ClothModel& operator=(ClothModel&&) noexcept;
 
   /// The material the model was built with.

@@ -15,14 +15,23 @@ namespace tailor {
 /// One point of a contact: a cloth vertex (`cloth` ≥ 0) or an obstacle point, with its
 /// positions at the start and end of the step and its weight in the relative position.
 struct ContactPoint {
+  /// Cloth vertex id, or -1 for an obstacle point (which never moves).
   Index cloth = -1;
+  ///@{
+  /// Positions at the start and end of the step.
   Vec3 p0 = Vec3::Zero(), p1 = Vec3::Zero();
+  ///@}
+  /// Weight in the relative position Σ w·p: positive on one side, negative on the other,
+  /// summing to 0 (vertex 1 against the face's barycentric weights, negated; for edges
+  /// 1 - s, s against -(1 - u), -u).
   double w = 0;
 };
 
 /// A contact between two features: up to four points.
 struct Contact {
+  /// The points; only the first `n` are used.
   std::array<ContactPoint, 4> points;
+  /// Number of points used (at most 4).
   int n = 0;
   Vec3 normal = Vec3::Zero();  ///< from the negative side towards the positive side
   double gap0 = 0;             ///< gap along the normal at t = 0
@@ -55,6 +64,7 @@ class ContactResponse {
   /// (inelastic when the pair already ends that far apart). False when nothing can move.
   bool apply(const Contact& c, double target_gap, Positions& x1) const;
 
+  /// Inverse mass per cloth vertex (1/kg; 0: the vertex never moves, e.g. pinned).
   const Eigen::VectorXd& inverse_mass() const { return m_inverse_mass; }
 
  private:

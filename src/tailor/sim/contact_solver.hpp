@@ -19,8 +19,12 @@ namespace tailor {
 
 /// A kinematic obstacle: its mesh and its positions at the start and end of the substep.
 struct KinematicObstacle {
+  /// The obstacle mesh (not owned).
   const TriangleMesh* mesh = nullptr;
+  ///@{
+  /// Obstacle positions at the start and end of the substep.
   Positions x0, x1;
+  ///@}
 };
 
 /// What one call to ContactSolver::resolve did.
@@ -44,7 +48,10 @@ struct ContactStats {
   CollisionSet first_pass_collisions;
   /// Sorted unique cloth faces in a candidate triangle pair of the first pass (same condition).
   std::vector<Index> candidate_faces;
+  ///@{
+  /// Time in collision detection and in the response (ms).
   double detection_ms = 0, response_ms = 0;
+  ///@}
 };
 
 /// Makes a cloth substep intersection-free: given intersection-free start positions `x0`
@@ -59,7 +66,9 @@ class ContactSolver {
                 DetectionConfig detection, ContactParams params,
                 std::vector<std::vector<Index>> section_loops = {});
   ~ContactSolver();
+  /// Moves the solver; the moved-from one may only be destroyed or assigned to.
   ContactSolver(ContactSolver&&) noexcept;
+  /// Move assignment (as the move constructor).
   ContactSolver& operator=(ContactSolver&&) noexcept;
 
   /// A change of the end positions that the solver interleaves with its own (e.g. strain

@@ -40,6 +40,7 @@ class FrameWriter {
   /// Writes summary.json (pretty-printed).
   void write_summary(const nlohmann::json& summary);
 
+  /// The output directory given to the constructor.
   const std::filesystem::path& directory() const { return m_directory; }
 
  private:

@@ -16,6 +16,7 @@ namespace tailor {
 /// Union-find over vertices, with the smallest id as the root (deterministic).
 class UnionFind {
  public:
+  /// `n` singleton sets, vertices 0 to n - 1.
   explicit UnionFind(Index n = 0) : m_parent(static_cast<std::size_t>(n)) {
     std::iota(m_parent.begin(), m_parent.end(), 0);
   }

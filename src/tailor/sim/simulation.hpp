@@ -22,6 +22,7 @@ namespace tailor {
 
 /// How to run a scene.
 struct SimulationOptions {
+  /// Self-collision detection settings of the contact solver.
   DetectionConfig detection = DetectionConfig::preset("paper");
   bool check_intersections = false;  ///< run check_intersections() after every substep
   bool check_frames = false;         ///< run it after the last substep of every frame
@@ -80,12 +81,20 @@ struct SimulationTotals {
   std::int64_t unresolved = 0;           ///< collisions the last resort left (must be 0)
   double max_strain = 0;                 ///< largest edge strain after any substep
   double max_strain_p99 = 0;             ///< largest 99th-percentile strain after any substep
-  std::int64_t max_ctps = 0, max_vf = 0, max_ee = 0;  ///< per step, sent to detection/CCD
-  DetectionStats detection;                           ///< summed over steps
+  ///@{
+  /// Largest per-step number of candidate triangle pairs, and of VF and EE pairs sent to
+  /// the exact CCD.
+  std::int64_t max_ctps = 0, max_vf = 0, max_ee = 0;
+  ///@}
+  DetectionStats detection;  ///< summed over steps
+  ///@{
   /// Summed times (ms) of the parts of a substep (see StepRecord).
   double forces_solve_ms = 0, detection_ms = 0, response_ms = 0, check_ms = 0, step_ms = 0;
+  ///@}
+  ///@{
   /// Parts of forces_solve_ms (ms, summed).
   double assemble_ms = 0, solve_ms = 0, strain_ms = 0;
+  ///@}
   double wall_seconds = 0;  ///< wall time spent in step_frame()
 };
 
@@ -97,7 +106,9 @@ class Simulation {
   /// clear the arm: one whose arm_margin() would exceed the sleeve's slack.
   explicit Simulation(const SceneConfig& config, SimulationOptions options = {});
   ~Simulation();
+  /// Moves the simulation; the moved-from one may only be destroyed or assigned to.
   Simulation(Simulation&&) noexcept;
+  /// Move assignment (as the move constructor).
   Simulation& operator=(Simulation&&) noexcept;
 
   /// Advances one frame (config().substeps substeps); returns that frame's substeps.

@@ -32,8 +32,8 @@ struct StrainLimitStats {
 
 /// Largest and 99th-percentile edge strain (`length / rest length - 1`) of a state.
 struct StrainSummary {
-  double max = 0;
-  double p99 = 0;
+  double max = 0;  ///< largest strain
+  double p99 = 0;  ///< 99th percentile
 };
 
 /// Edge strains of `x` relative to `rest` (one per edge of `mesh`).
@@ -66,7 +66,9 @@ class StrainLimiter {
   /// sleeve 11-14 % plain, exactly the 2.5 % limit accelerated; the 10× sleeve (66 rings)
   /// 3.3-7.3 % accelerated within 400 sweeps (docs/simulation.md). Off only on request.
   bool accelerated() const { return m_accelerated; }
+  /// Estimated spectral radius of the sweeps (Chebyshev weights).
   static constexpr double kChebyshevRadius = 0.995;
+  /// First sweep that is extrapolated.
   static constexpr int kChebyshevFrom = 10;
 
   /// While the worst strain exceeds kOverRelaxedAbove times the limit, corrections remove
@@ -74,7 +76,9 @@ class StrainLimiter {
   /// than the rest length). Chosen on the sleeve's three gestures (docs/simulation.md):
   /// 1.5 above 2x keeps every edge within 3 % and the sleeve's end extent at 98-99.5 %;
   /// over-relaxing down to 1.2x the limit let the elbow's forearm stay bunched (84 %).
+  /// Fraction of an edge's excess a correction removes while over-relaxing.
   static constexpr double kOverRelaxation = 1.5;
+  /// Over-relax while the worst strain exceeds this multiple of the limit.
   static constexpr double kOverRelaxedAbove = 2.0;
 
   /// The strain limit.
