@@ -125,7 +125,7 @@ TEST(ViewCone, HoldsEverySampledDirection) {
     const Vec3 a0 = point(spread), b0 = point(spread), c0 = point(spread);
     const Vec3 a1 = point(spread), b1 = point(spread), c1 = point(spread);
     const Vec3 o0(0.2 * uniform(rng), 0, 0), o1(0, 0.2 * uniform(rng), 0.1 * uniform(rng));
-    const ViewCone cone = swept_view_cone(a0, b0, c0, o0, a1, b1, c1, o1);
+    const ViewCone cone = swept_view_cone({a0, b0, c0}, {a1, b1, c1}, o0, o1);
     if (cone.everything) continue;
     ++narrow;
     for (int s = 0; s < 50; ++s) {

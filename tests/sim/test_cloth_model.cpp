@@ -113,7 +113,7 @@ void run_hanging_sheet(ClothSolver solver, int substeps, int frames, bool weft_d
   const double e0 = model.energy(x, v, g).total();
   double max_energy = e0;
   for (int step = 0; step < frames * substeps; ++step) {
-    const ClothStepInfo info = model.step(x, v, targets, g, h, x1, v1);
+    const ClothStepInfo info = model.step(x, v, {h, g, &targets, {}}, x1, v1);
     ASSERT_TRUE(info.ok) << "step " << step;
     ASSERT_TRUE(x1.allFinite() && v1.allFinite()) << "step " << step;
     x = x1;

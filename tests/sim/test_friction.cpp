@@ -62,7 +62,7 @@ SlideResult slide(double degrees, double v0, double seconds) {
       c.normal_force = normal_force[static_cast<std::size_t>(i)];
       c.slip_speed = slip[static_cast<std::size_t>(i)];
     }
-    const ClothStepInfo info = model.step(x, v, no_pins, g, h, x1, v1, planes);
+    const ClothStepInfo info = model.step(x, v, {h, g, &no_pins, planes}, x1, v1);
     EXPECT_TRUE(info.ok);
     for (Index i = 0; i < n; ++i) {
       const ContactPlane& c = planes[static_cast<std::size_t>(i)];
@@ -134,7 +134,7 @@ TEST(Friction, NoFrictionSlidesAtAnyAngle) {
       c.normal_force = model.masses()[i] * kGravity;  // ignored: μ = 0
       planes.push_back(c);
     }
-    model.step(x, v, Positions(0, 3), g, h, x1, v1, planes);
+    model.step(x, v, {h, g, nullptr, planes}, x1, v1);
     x = x1;
     v = v1;
   }

@@ -145,8 +145,8 @@ Verdict vf_verdict(const Motion& motion, const Ball& t, const VertexFaceQuery* q
   if (count == 0) return Verdict::inside;
   if (root == nullptr) return Verdict::unknown;
   int exact[3];
-  if (!vertex_face_signs_at_root(*query, k, open, count, root->lo, root->hi, root->sign_lo,
-                                 exact)) {
+  if (!vertex_face_signs_at_root(*query, k, {root->lo, root->hi, root->sign_lo},
+                                 {open, static_cast<std::size_t>(count)}, exact)) {
     return Verdict::unknown;
   }
   root->used_exact = true;
@@ -175,7 +175,8 @@ Verdict ee_verdict(const Motion& motion, const Ball& t, const EdgeEdgeQuery* que
     if (o[i] == 0) open[count++] = i + 1;
   }
   int exact[4];
-  if (!edge_edge_signs_at_root(*query, k, open, count, root->lo, root->hi, root->sign_lo, exact)) {
+  if (!edge_edge_signs_at_root(*query, k, {root->lo, root->hi, root->sign_lo},
+                               {open, static_cast<std::size_t>(count)}, exact)) {
     return Verdict::unknown;
   }
   root->used_exact = true;

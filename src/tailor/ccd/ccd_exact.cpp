@@ -75,11 +75,11 @@ CcdResult edge_edge_with(const EdgeEdgeQuery& q, CcdPath path) {
 
 /// Exact signs of the listed conditions at the root of s.f in (lo, hi).
 template <class Z, class Polys, class Condition>
-void signs_at_root(const Polys& s, Condition&& condition, const int* which, int count, double lo,
-                   double hi, int sign_lo, int* signs) {
-  RootPoint<Z> r =
-      RootPoint<Z>::isolated(s.f, Dyadic<Z>::from_double(lo), Dyadic<Z>::from_double(hi), sign_lo);
-  for (int i = 0; i < count; ++i) {
+void signs_at_root(const Polys& s, Condition&& condition, const IsolatedRoot& root,
+                   std::span<const int> which, int* signs) {
+  RootPoint<Z> r = RootPoint<Z>::isolated(s.f, Dyadic<Z>::from_double(root.lo),
+                                          Dyadic<Z>::from_double(root.hi), root.sign_lo);
+  for (std::size_t i = 0; i < which.size(); ++i) {
     const Poly<Z>& q = condition(which[i]);
     // The double tier could not separate these from zero: test for zero first.
     signs[i] =
@@ -89,8 +89,8 @@ void signs_at_root(const Polys& s, Condition&& condition, const int* which, int 
 
 }  // namespace
 
-bool vertex_face_signs_at_root(const VertexFaceQuery& q, int axis, const int* which, int count,
-                               double lo, double hi, int sign_lo, int* signs) {
+bool vertex_face_signs_at_root(const VertexFaceQuery& q, int axis, const IsolatedRoot& root,
+                               std::span<const int> which, int* signs) {
   try {
     const auto rel = relative_polys<Fixed>(
         {&q.a_t0, &q.b_t0, &q.c_t0, &q.p_t0, &q.a_t1, &q.b_t1, &q.c_t1, &q.p_t1});
@@ -100,15 +100,15 @@ bool vertex_face_signs_at_root(const VertexFaceQuery& q, int axis, const int* wh
         [&](int c) -> const Poly<Fixed>& {
           return c == 0 ? component(s.n, axis) : s.edge(c - 1, axis);
         },
-        which, count, lo, hi, sign_lo, signs);
+        root, which, signs);
     return true;
   } catch (const CapacityExceeded&) {
     return false;
   }
 }
 
-bool edge_edge_signs_at_root(const EdgeEdgeQuery& q, int axis, const int* which, int count,
-                             double lo, double hi, int sign_lo, int* signs) {
+bool edge_edge_signs_at_root(const EdgeEdgeQuery& q, int axis, const IsolatedRoot& root,
+                             std::span<const int> which, int* signs) {
   try {
     const auto rel = relative_polys<Fixed>(
         {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0, &q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1});
@@ -118,7 +118,7 @@ bool edge_edge_signs_at_root(const EdgeEdgeQuery& q, int axis, const int* which,
         [&](int c) -> const Poly<Fixed>& {
           return c == 0 ? component(s.m, axis) : s.orientation(c - 1, axis);
         },
-        which, count, lo, hi, sign_lo, signs);
+        root, which, signs);
     return true;
   } catch (const CapacityExceeded&) {
     return false;

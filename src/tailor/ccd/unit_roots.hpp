@@ -119,52 +119,108 @@ void quadratic_roots_in_unit(const Poly<Z>& p, UnitRoots<Z>& out) {
   }
 }
 
+/// A node of the cubic's subdivision: its Bernstein coefficients (up to a positive factor)
+/// on [k / 2^j, (k + 1) / 2^j].
+template <class Z>
+struct BernsteinNode {
+  Z b[4];     ///< Bernstein coefficients, up to a positive factor
+  Z k;        ///< the node's left end is k / 2^j
+  int j = 0;  ///< depth
+};
+
+/// Whether the node certainly holds exactly one root, in its interior.
+template <class Z>
+bool isolates_one_root(const BernsteinNode<Z>& n) {
+  return variations(n.b) == 1 && !n.b[0].is_zero() && !n.b[3].is_zero();
+}
+
+/// The root node [0, 1] of p (coefficients times 3).
+template <class Z>
+BernsteinNode<Z> unit_node(const Poly<Z>& p) {
+  const Z c0 = p.at(0), c1 = p.at(1), c2 = p.at(2), c3 = p.at(3);
+  BernsteinNode<Z> n;
+  n.b[0] = Z(3) * c0;
+  n.b[1] = Z(3) * c0 + c1;
+  n.b[2] = Z(3) * c0 + c1.shifted(1) + c2;
+  n.b[3] = Z(3) * (c0 + c1 + c2 + c3);
+  return n;
+}
+
+/// The halves of `n` by de Casteljau at its midpoint, coefficients times 8; left.b[3] =
+/// right.b[0] is the value at the split point (zero when it is a root).
+template <class Z>
+void split_in_halves(const BernsteinNode<Z>& n, BernsteinNode<Z>& left, BernsteinNode<Z>& right) {
+  const Z &b0 = n.b[0], &b1 = n.b[1], &b2 = n.b[2], &b3 = n.b[3];
+  const Z b01 = b0 + b1, b12 = b1 + b2, b23 = b2 + b3;
+  const Z b012 = b01 + b12, b123 = b12 + b23;
+  const Z mid = b012 + b123;
+  right.b[0] = mid;
+  right.b[1] = b123.shifted(1);
+  right.b[2] = b23.shifted(2);
+  right.b[3] = b3.shifted(3);
+  right.k = n.k.shifted(1) + Z(1);
+  right.j = n.j + 1;
+  left.b[0] = b0.shifted(3);
+  left.b[1] = b01.shifted(2);
+  left.b[2] = b012.shifted(1);
+  left.b[3] = mid;
+  left.k = n.k.shifted(1);
+  left.j = n.j + 1;
+}
+
+/// Work left to do, last in first out: a node to subdivide, a node known to isolate one
+/// root, or a dyadic root at a split point. Subdivision diminishes variations (those of
+/// the two halves add up to at most the parent's, <= 3), so at most one pending node can
+/// hold two or more, and the stack stays short however deep the subdivision goes (close
+/// roots need depth, not memory).
+template <class Z>
+class PendingWork {
+ public:
+  /// What a pending entry is.
+  enum class Kind : unsigned char { node, isolated, root };
+  /// Adds an entry; throws CapacityExceeded past the fixed capacity.
+  void push(Kind kind, const BernsteinNode<Z>& n) {
+    if (m_top == kCapacity) throw CapacityExceeded{};
+    m_items[m_top].kind = kind;
+    m_items[m_top].node = n;
+    ++m_top;
+  }
+  /// Whether nothing is pending.
+  bool empty() const { return m_top == 0; }
+  /// Takes the last entry into `n`; returns its kind.
+  Kind pop(BernsteinNode<Z>& n) {
+    --m_top;
+    n = std::move(m_items[m_top].node);
+    return m_items[m_top].kind;
+  }
+
+ private:
+  static constexpr int kCapacity = 12;
+  struct Item {
+    Kind kind = Kind::node;
+    BernsteinNode<Z> node;
+  };
+  Item m_items[kCapacity];
+  int m_top = 0;
+};
+
 template <class Z>
 void cubic_roots_in_unit(const Poly<Z>& p, UnitRoots<Z>& out) {
-  struct Node {
-    Z b[4];
-    Z k;  // the node is [k / 2^j, (k + 1) / 2^j]
-    int j = 0;
-  };
-  // Work left to do, in order: a node to subdivide, a node known to isolate one root, or
-  // a dyadic root at a split point. Subdivision diminishes variations (those of the two
-  // halves add up to at most the parent's, <= 3), so at most one pending node can hold
-  // two or more, and the list stays short however deep the subdivision goes (close roots
-  // need depth, not memory).
-  struct Pending {
-    enum class Kind : unsigned char { node, isolated, root } kind = Kind::node;
-    Node node;
-  };
-  constexpr int kMaxPending = 12;
-  Pending pending[kMaxPending];
-  int top = 0;
-  auto push = [&](typename Pending::Kind kind, const Node& n) {
-    if (top == kMaxPending) throw CapacityExceeded{};
-    pending[top].kind = kind;
-    pending[top].node = n;
-    ++top;
-  };
+  using Node = BernsteinNode<Z>;
+  using Kind = typename PendingWork<Z>::Kind;
+  PendingWork<Z> pending;
   auto isolated_root = [&](const Node& n) {
     return RootPoint<Z>::isolated(p, Dyadic<Z>{n.k, n.j}, Dyadic<Z>{n.k + Z(1), n.j},
                                   n.b[0].sign());
   };
-  auto isolates = [](const Node& n) {
-    return variations(n.b) == 1 && !n.b[0].is_zero() && !n.b[3].is_zero();
-  };
-
-  const Z c0 = p.at(0), c1 = p.at(1), c2 = p.at(2), c3 = p.at(3);
-  Node cur;
-  cur.b[0] = Z(3) * c0;
-  cur.b[1] = Z(3) * c0 + c1;
-  cur.b[2] = Z(3) * c0 + c1.shifted(1) + c2;
-  cur.b[3] = Z(3) * (c0 + c1 + c2 + c3);
+  Node cur = unit_node(p);
   const bool root_at_one = cur.b[3].is_zero();
   if (cur.b[0].is_zero()) out.add(RootPoint<Z>::rational(Z(0), Z(1)));
   bool discriminant_checked = false;
   bool have = true;
   while (have) {
     const int v = variations(cur.b);
-    if (v == 1 && isolates(cur)) {
+    if (v == 1 && isolates_one_root(cur)) {
       out.add(isolated_root(cur));
     } else if (v > 0) {
       if (cur.j >= kDiscriminantDepth && !discriminant_checked) {
@@ -176,43 +232,27 @@ void cubic_roots_in_unit(const Poly<Z>& p, UnitRoots<Z>& out) {
         }
       }
       if (Z::kBounded && cur.j >= kMaxFixedDepth) throw CapacityExceeded{};
-      // de Casteljau at the midpoint, times 8.
-      const Z &b0 = cur.b[0], &b1 = cur.b[1], &b2 = cur.b[2], &b3 = cur.b[3];
-      const Z b01 = b0 + b1, b12 = b1 + b2, b23 = b2 + b3;
-      const Z b012 = b01 + b12, b123 = b12 + b23;
-      const Z mid = b012 + b123;
-      Node right;
-      right.b[0] = mid;
-      right.b[1] = b123.shifted(1);
-      right.b[2] = b23.shifted(2);
-      right.b[3] = b3.shifted(3);
-      right.k = cur.k.shifted(1) + Z(1);
-      right.j = cur.j + 1;
-      Node left;
-      left.b[0] = b0.shifted(3);
-      left.b[1] = b01.shifted(2);
-      left.b[2] = b012.shifted(1);
-      left.b[3] = mid;
-      left.k = cur.k.shifted(1);
-      left.j = cur.j + 1;
+      Node left, right;
+      split_in_halves(cur, left, right);
       // Pushed in reverse order of the roots: right half, then the split point.
       if (variations(right.b) > 0) {
-        push(isolates(right) ? Pending::Kind::isolated : Pending::Kind::node, right);
+        pending.push(isolates_one_root(right) ? Kind::isolated : Kind::node, right);
       }
-      if (mid.is_zero()) push(Pending::Kind::root, right);
+      if (right.b[0].is_zero()) pending.push(Kind::root, right);
       cur = std::move(left);
       continue;
     }
     // Next pending work.
     have = false;
-    while (top > 0) {
-      Pending& next = pending[--top];
-      if (next.kind == Pending::Kind::root) {
-        out.add(RootPoint<Z>::dyadic(Dyadic<Z>{next.node.k, next.node.j}));
-      } else if (next.kind == Pending::Kind::isolated) {
-        out.add(isolated_root(next.node));
+    while (!pending.empty()) {
+      Node next;
+      const Kind kind = pending.pop(next);
+      if (kind == Kind::root) {
+        out.add(RootPoint<Z>::dyadic(Dyadic<Z>{next.k, next.j}));
+      } else if (kind == Kind::isolated) {
+        out.add(isolated_root(next));
       } else {
-        cur = std::move(next.node);
+        cur = std::move(next);
         have = true;
         break;
       }

@@ -139,7 +139,7 @@ void RadialViewCulling::build_local_faces(Index c) {
 RadialViewCounts RadialViewCulling::classify(const Positions& x0, const Positions& x1,
                                              bool find_clean) {
   begin_step(x0, x1, find_clean);
-  return classify_clusters(m_usable);
+  return classify_wanted(true);
 }
 
 void RadialViewCulling::begin_step(const Positions& x0, const Positions& x1, bool find_clean) {
@@ -156,7 +156,7 @@ void RadialViewCulling::begin_step(const Positions& x0, const Positions& x1, boo
     if (!m_clusters.usable(c)) continue;
     state.observer0 = m_clusters.observer(c, x0);
     state.observer1 = m_clusters.observer(c, x1);
-    state.face_raw.assign(m_clusters.faces(c).size(), kUnknownSign);
+    state.face_raw.assign(m_clusters.faces(c).size(), kNotComputed);
   }
 }
 
@@ -164,7 +164,7 @@ signed char RadialViewCulling::raw_sign(Index c, Index f) const {
   ClusterState& state = m_state[c];
   std::atomic_ref<signed char> cached(state.face_raw[m_slot[c][f]]);
   signed char raw = cached.load(std::memory_order_relaxed);
-  if (raw != kUnknownSign) return raw;
+  if (raw != kNotComputed) return raw;
   // det(b-a, c-a, o-a) = det(o-a, b-a, c-a): the side of the observer of the face's
   // plane. Deterministic, so threads racing on one entry store the same value.
   const auto v = m_clusters.mesh().faces().row(f);
@@ -214,7 +214,7 @@ RadialViewCounts RadialViewCulling::classify_clusters(std::uint64_t clusters) {
     counts.faces_clean += state.counts.faces_clean;
     const auto& faces = m_clusters.faces(c);
     for (std::size_t i = 0; i < state.face_sign.size(); ++i) {
-      if (state.face_sign[i] == 2) {
+      if (state.face_sign[i] == FaceSign::positive_clean) {
         if (m_clean_mask.empty()) m_clean_mask.assign(m_clusters.mesh().num_faces(), 0);
         m_clean_mask[faces[i]] |= std::uint64_t{1} << c;
         m_clean_mask_dirty = true;
@@ -240,32 +240,34 @@ void RadialViewCulling::classify_cluster(Index c) {
   RadialViewCounts& counts = state.counts;
   if (seeing == 0) {
     counts.triangles_undetermined += static_cast<std::int64_t>(faces.size() + ghosts.size());
-    state.face_sign.assign(faces.size(), 0);
+    state.face_sign.assign(faces.size(), FaceSign::undetermined);
     return;
   }
   counts.clusters_used = 1;
-  const auto relative = [&](signed char raw) -> signed char {
-    return raw == 0 ? 0 : raw == seeing ? 1 : -1;
+  const auto relative = [&](signed char raw) {
+    return raw == 0        ? FaceSign::undetermined
+           : raw == seeing ? FaceSign::positive
+                           : FaceSign::negative;
   };
   state.face_sign.resize(faces.size());
   std::vector<std::size_t> blocking;  // cluster face slots, then faces.size() + ghost index
   for (std::size_t i = 0; i < faces.size(); ++i) {
     state.face_sign[i] = relative(state.face_raw[i]);
-    if (state.face_sign[i] != 1) blocking.push_back(i);
+    if (state.face_sign[i] != FaceSign::positive) blocking.push_back(i);
   }
   for (std::size_t i = 0; i < ghosts.size(); ++i) {
-    if (relative(ghosts[i].raw) != 1) blocking.push_back(faces.size() + i);
+    if (relative(ghosts[i].raw) != FaceSign::positive) blocking.push_back(faces.size() + i);
   }
   for (std::size_t i = 0; i < faces.size() + ghosts.size(); ++i) {
-    const signed char sign =
+    const FaceSign sign =
         i < faces.size() ? state.face_sign[i] : relative(ghosts[i - faces.size()].raw);
-    ++(sign == 1   ? counts.triangles_positive
-       : sign == 0 ? counts.triangles_undetermined
-                   : counts.triangles_negative);
+    ++(sign == FaceSign::positive       ? counts.triangles_positive
+       : sign == FaceSign::undetermined ? counts.triangles_undetermined
+                                        : counts.triangles_negative);
   }
   if (blocking.empty()) {
     counts.clusters_certified = 1;
-    std::fill(state.face_sign.begin(), state.face_sign.end(), 2);
+    std::fill(state.face_sign.begin(), state.face_sign.end(), FaceSign::positive_clean);
     counts.faces_clean = static_cast<std::int64_t>(faces.size());
     return;
   }
@@ -296,7 +298,7 @@ void RadialViewCulling::classify_cluster(Index c) {
   std::vector<ViewCone> ghost_cones(ghosts.size());
   for (std::size_t i = 0; i < ghosts.size(); ++i) {
     const auto p = ghost_corners(ghosts[i], x0, x1);
-    ghost_cones[i] = swept_view_cone(p[0], p[1], p[2], o0, p[3], p[4], p[5], o1);
+    ghost_cones[i] = swept_view_cone({p[0], p[1], p[2]}, {p[3], p[4], p[5]}, o0, o1);
   }
   find_clean_faces(c, blocking, ghost_cones);
 }
@@ -323,7 +325,7 @@ void RadialViewCulling::find_clean_faces(Index c, const std::vector<std::size_t>
     const std::size_t last = std::min(num_faces, first + kGroup);
     members.clear();
     for (std::size_t i = first; i < last; ++i) {
-      if (state.face_sign[i] == 1) members.push_back(state.cones[i]);
+      if (state.face_sign[i] == FaceSign::positive) members.push_back(state.cones[i]);
     }
     if (members.empty()) continue;
     const ViewCone group = bounding_view_cone(members.data(), static_cast<int>(members.size()));
@@ -332,7 +334,7 @@ void RadialViewCulling::find_clean_faces(Index c, const std::vector<std::size_t>
       if (view_cones_disjoint(group, block_groups[b])) continue;
       const std::size_t b_end = std::min(block_cones.size(), (b + 1) * kGroup);
       for (std::size_t i = first; i < last; ++i) {
-        if (state.face_sign[i] != 1 || !clean[i - first]) continue;
+        if (state.face_sign[i] != FaceSign::positive || !clean[i - first]) continue;
         if (view_cones_disjoint(state.cones[i], block_groups[b])) continue;
         for (std::size_t j = b * kGroup; j < b_end && clean[i - first]; ++j) {
           clean[i - first] = view_cones_disjoint(state.cones[i], block_cones[j]);
@@ -340,8 +342,8 @@ void RadialViewCulling::find_clean_faces(Index c, const std::vector<std::size_t>
       }
     }
     for (std::size_t i = first; i < last; ++i) {
-      if (state.face_sign[i] == 1 && clean[i - first]) {
-        state.face_sign[i] = 2;
+      if (state.face_sign[i] == FaceSign::positive && clean[i - first]) {
+        state.face_sign[i] = FaceSign::positive_clean;
         ++state.counts.faces_clean;
       }
     }

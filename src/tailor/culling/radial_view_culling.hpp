@@ -78,19 +78,29 @@ struct RadialViewCounts {
   std::int64_t pairs_culled = 0;            ///< candidate triangle pairs removed
 };
 
+/// The side from which the observer of a cluster sees one of its faces over the step, once
+/// the cluster is classified.
+enum class FaceSign : signed char {
+  negative = -1,      ///< its back, throughout the step
+  undetermined = 0,   ///< the face's plane may pass the observer (or the cluster is unusable)
+  positive = 1,       ///< its front, throughout the step
+  positive_clean = 2  ///< its front, and no triangle of the cluster can block the view of it
+};
+
 /// The per-step state of radial-view culling over a fixed set of clusters.
 ///
-/// Two ways to use a step. classify() classifies every cluster, then pair_culled() answers
-/// for any pair. The lazy way costs only what the pairs at hand need: begin_step(), then
-/// edge_planes_separate() on each pair (rule (5), computing the few raw signs it reads),
-/// then classify_wanted() classifies only the clusters in which some pair it kept could
-/// still be culled by (4) (with clean faces off: only clusters in which both faces of a
-/// kept pair have the same nonzero raw sign, since a certified cluster has every face
-/// positive), and classified_clean() finishes the pairs. Both ways cull exactly the same
-/// pairs: a pair is culled iff rule (5) holds in a shared cluster or one of its faces is
-/// clean in a shared cluster, and the lazy way classifies every cluster that can make a
-/// kept pair's face clean. A sleeve's contact-free clusters, where every pair is culled by
-/// (5), are then never classified (their O(faces) classification is most of the cost).
+/// One protocol per step: begin_step(); then, for each candidate pair, edge_planes_separate()
+/// (rule (5), computing the few raw signs it reads), which remembers the clusters in which
+/// a pair it kept could still be culled by (4) (with clean faces off: only clusters in
+/// which both faces of a kept pair have the same nonzero raw sign, since a certified cluster
+/// has every face positive); then classify_wanted() classifies those clusters only, and
+/// classified_clean() (or pair_culled()) finishes the pairs. classify() is the same
+/// protocol with every cluster wanted: begin_step() then classify_wanted(true), after which
+/// pair_culled() answers for any pair. Both cull exactly the same pairs: a pair is culled
+/// iff rule (5) holds in a shared cluster or one of its faces is clean in a shared
+/// cluster, and the wanted clusters include every cluster that can make a kept pair's face
+/// clean. A sleeve's contact-free clusters, where every pair is culled by (5), are then
+/// never classified (their O(faces) classification is most of the cost).
 class RadialViewCulling {
  public:
   RadialViewCulling() = default;
@@ -101,7 +111,8 @@ class RadialViewCulling {
   /// The clusters the classification works on.
   const RadialViewClusters& clusters() const { return m_clusters; }
 
-  /// Classifies every cluster over the step from `x0` to `x1` (parallel over clusters).
+  /// begin_step(x0, x1, find_clean), then classify_wanted(true): classifies every cluster
+  /// over the step from `x0` to `x1` (parallel over clusters).
   /// `x0` and `x1` must stay alive while pair_culled() and cull() use this step.
   /// `find_clean`: also find the clean faces (view cones of every face and blocking
   /// triangle). They only matter for pairs of faces that share a vertex: a clean face and
@@ -140,21 +151,21 @@ class RadialViewCulling {
 
   /// Bit c set when face `f` is clean in cluster c over the classified step.
   std::uint64_t clean_mask(Index f) const { return m_clean_mask.empty() ? 0 : m_clean_mask[f]; }
-  /// Per face of cluster `c` (in clusters().faces(c) order), over the classified step: -1
-  /// negative, 0 undetermined, 1 positive, 2 positive and clean (all 0 when the cluster's
-  /// winding number is not ±1; empty when the cluster is not usable or was not classified
-  /// this step).
-  const std::vector<signed char>& face_signs(Index c) const { return m_state[c].face_sign; }
+  /// Per face of cluster `c` (in clusters().faces(c) order), over the classified step (all
+  /// undetermined when the cluster's winding number is not ±1; empty when the cluster is
+  /// not usable or was not classified this step).
+  const std::vector<FaceSign>& face_signs(Index c) const { return m_state[c].face_sign; }
 
  private:
-  // A raw sign not computed yet this step.
-  static constexpr signed char kUnknownSign = 2;
+  // Raw signs are StepSign values (-1, 0, 1) of coplanarity_sign(a, b, c, observer), kept
+  // as signed char for std::atomic_ref; this one marks a sign not computed yet this step.
+  static constexpr signed char kNotComputed = 2;
   struct ClusterState {
     Vec3 observer0 = Vec3::Zero(), observer1 = Vec3::Zero();
     // coplanarity_sign(a, b, c, observer) per face, computed when first needed (atomic
     // access while pairs are tested in parallel); empty when the cluster is not usable.
     std::vector<signed char> face_raw;
-    std::vector<signed char> face_sign;  // as face_signs()
+    std::vector<FaceSign> face_sign;  // as face_signs()
     RadialViewCounts counts;
     // Scratch reused from step to step.
     std::vector<Vec3> unit0, unit1;  // directions to the cluster's vertices

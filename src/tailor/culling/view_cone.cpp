@@ -38,13 +38,15 @@ ViewCone view_cone_of_directions(const Vec3 (&unit)[6]) {
   return cone;
 }
 
-ViewCone swept_view_cone(const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0, const Vec3& o_t0,
-                         const Vec3& a_t1, const Vec3& b_t1, const Vec3& c_t1, const Vec3& o_t1) {
+ViewCone swept_view_cone(const std::array<Vec3, 3>& triangle_t0,
+                         const std::array<Vec3, 3>& triangle_t1, const Vec3& observer_t0,
+                         const Vec3& observer_t1) {
   Vec3 unit[6];
-  const bool ok = unit_direction(o_t0, a_t0, unit[0]) && unit_direction(o_t0, b_t0, unit[1]) &&
-                  unit_direction(o_t0, c_t0, unit[2]) && unit_direction(o_t1, a_t1, unit[3]) &&
-                  unit_direction(o_t1, b_t1, unit[4]) && unit_direction(o_t1, c_t1, unit[5]);
-  if (!ok) return {};
+  for (int k = 0; k < 3; ++k) {
+    if (!unit_direction(observer_t0, triangle_t0[k], unit[k]) ||
+        !unit_direction(observer_t1, triangle_t1[k], unit[3 + k]))
+      return {};
+  }
   return view_cone_of_directions(unit);
 }
 

@@ -18,6 +18,8 @@
 /// 2^-40. The disjointness test compares cosines with the same 2^-40 slack on each side,
 /// so rounding can only make it answer "may overlap".
 
+#include <array>
+
 #include "tailor/geometry/types.hpp"
 
 namespace tailor {
@@ -30,11 +32,12 @@ struct ViewCone {
   bool everything = true;     ///< no cone under 90° was found: every direction
 };
 
-/// The view cone of triangle `(a, b, c)` moving from `*_t0` to `*_t1` seen from an
-/// observer moving from `o_t0` to `o_t1`. Every direction when a vertex can meet the
-/// observer, the cone would reach 90° or an input is not finite.
-ViewCone swept_view_cone(const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0, const Vec3& o_t0,
-                         const Vec3& a_t1, const Vec3& b_t1, const Vec3& c_t1, const Vec3& o_t1);
+/// The view cone of a triangle whose corners move from `triangle_t0` to `triangle_t1`, seen
+/// from an observer moving from `observer_t0` to `observer_t1`. Every direction when a
+/// vertex can meet the observer, the cone would reach 90° or an input is not finite.
+ViewCone swept_view_cone(const std::array<Vec3, 3>& triangle_t0,
+                         const std::array<Vec3, 3>& triangle_t1, const Vec3& observer_t0,
+                         const Vec3& observer_t1);
 
 /// The view cone holding six unit directions (as rounded from the observer to the three
 /// vertices at t = 0 and t = 1, each vector divided by its norm): same rules as above.

@@ -67,6 +67,28 @@ Eigen::Matrix3d lower_triangular_inverse(const Eigen::Matrix3d& L) {
 
 }  // namespace
 
+namespace {
+
+/// The vertex graph of A's 3 × 3 blocks, both triangles; throws when it is not symmetric.
+BlockCholesky::SparseMatrix vertex_graph(const BlockCholesky::SparseMatrix& S) {
+  const Eigen::Index n = S.rows() / 3;
+  BlockCholesky::SparseMatrix graph(n, n);
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(at(static_cast<int>(S.nonZeros())));
+  for (int j = 0; j < S.cols(); ++j) {
+    for (BlockCholesky::SparseMatrix::InnerIterator it(S, j); it; ++it) {
+      t.emplace_back(static_cast<int>(it.row()) / 3, j / 3, 1.0);
+    }
+  }
+  graph.setFromTriplets(t.begin(), t.end());
+  if ((graph - BlockCholesky::SparseMatrix(graph.transpose())).norm() != 0) {
+    throw std::invalid_argument("block Cholesky: the pattern is not symmetric");
+  }
+  return graph;
+}
+
+}  // namespace
+
 void BlockCholesky::analyze(const SparseMatrix& A, const std::vector<int>& order) {
   if (A.rows() != A.cols() || A.rows() % 3 != 0 || A.rows() == 0) {
     throw std::invalid_argument("block Cholesky: the matrix must be square with 3k rows");
@@ -74,22 +96,23 @@ void BlockCholesky::analyze(const SparseMatrix& A, const std::vector<int>& order
   SparseMatrix S = A;  // compressed copy to walk
   S.makeCompressed();
   const int n = static_cast<int>(A.rows() / 3);
+  const SparseMatrix graph = vertex_graph(S);
+  set_order(graph, order);
+  map_upper_blocks(S, graph);
+  std::vector<int> parent, column_counts;
+  row_patterns(parent, column_counts);
+  split_for_two_threads(parent, column_rows(column_counts));
 
-  // The vertex graph, both triangles.
-  SparseMatrix graph(n, n);
-  {
-    std::vector<Eigen::Triplet<double>> t;
-    t.reserve(at(static_cast<int>(S.nonZeros())));
-    for (int j = 0; j < S.cols(); ++j) {
-      for (SparseMatrix::InnerIterator it(S, j); it; ++it) {
-        t.emplace_back(static_cast<int>(it.row()) / 3, j / 3, 1.0);
-      }
-    }
-    graph.setFromTriplets(t.begin(), t.end());
-  }
-  if ((graph - SparseMatrix(graph.transpose())).norm() != 0) {
-    throw std::invalid_argument("block Cholesky: the pattern is not symmetric");
-  }
+  m_l_values.assign(m_l_rows.size(), Block::Zero());
+  m_diagonal_inverse.assign(at(n), Block::Zero());
+  m_work.assign(at(n), Block::Zero());
+  m_work_vector.assign(at(n), Eigen::Vector3d::Zero());
+  m_scalar_nonzeros = S.nonZeros();
+  m_blocks = n;
+}
+
+void BlockCholesky::set_order(const SparseMatrix& graph, const std::vector<int>& order) {
+  const int n = static_cast<int>(graph.rows());
   m_order = order.empty() ? fill_reducing_order(graph.triangularView<Eigen::Upper>()) : order;
   m_rank.assign(at(n), -1);
   for (int k = 0; k < n; ++k) {
@@ -99,9 +122,12 @@ void BlockCholesky::analyze(const SparseMatrix& A, const std::vector<int>& order
     }
     m_rank[at(v)] = k;
   }
+}
 
+void BlockCholesky::map_upper_blocks(const SparseMatrix& S, const SparseMatrix& graph) {
   // Upper blocks of the reordered matrix, column by column, and where each scalar entry
   // of A goes in them (entries of lower blocks are the same values, transposed).
+  const int n = static_cast<int>(graph.rows());
   std::vector<std::vector<std::pair<int, int>>> columns(at(n));
   for (int j = 0; j < n; ++j) {
     const int k = m_rank[at(j)];
@@ -135,11 +161,15 @@ void BlockCholesky::analyze(const SparseMatrix& A, const std::vector<int>& order
       m_a_target[at(p)] = 9 * it->second + (j % 3) * 3 + r % 3;
     }
   }
+}
 
+void BlockCholesky::row_patterns(std::vector<int>& parent, std::vector<int>& column_counts) {
   // Elimination tree and the pattern of every row of L (Liu): row k's pattern is the
   // set of nodes on the tree paths from A's upper entries of column k up to k.
-  std::vector<int> parent(at(n), -1), mark(at(n), -1);
-  std::vector<int> column_counts(at(n), 0);
+  const int n = static_cast<int>(m_a_start.size()) - 1;
+  parent.assign(at(n), -1);
+  column_counts.assign(at(n), 0);
+  std::vector<int> mark(at(n), -1);
   m_row_start.assign(at(n) + 1, 0);
   m_row_columns.clear();
   for (int k = 0; k < n; ++k) {
@@ -157,31 +187,26 @@ void BlockCholesky::analyze(const SparseMatrix& A, const std::vector<int>& order
     std::sort(m_row_columns.begin() + row_begin, m_row_columns.end());
     m_row_start[at(k) + 1] = static_cast<int>(m_row_columns.size());
   }
+}
+
+std::vector<double> BlockCholesky::column_rows(const std::vector<int>& column_counts) {
+  const int n = static_cast<int>(column_counts.size());
   m_l_start.assign(at(n) + 1, 0);
   for (int i = 0; i < n; ++i) m_l_start[at(i) + 1] = m_l_start[at(i)] + column_counts[at(i)];
   // Column i of L receives its rows in increasing order as the rows are factorised; the
   // block updates row k costs (one per entry of column i above row k, per i in its
-  // pattern) weigh it for the split below.
+  // pattern) weigh it for the split into two threads.
   m_l_rows.assign(at(m_l_start.back()), 0);
   std::vector<double> cost(at(n), 1.0);
-  {
-    std::vector<int> next(m_l_start.begin(), m_l_start.end() - 1);
-    for (int k = 0; k < n; ++k) {
-      for (int r = m_row_start[at(k)]; r < m_row_start[at(k) + 1]; ++r) {
-        const int i = m_row_columns[at(r)];
-        cost[at(k)] += 1 + (next[at(i)] - m_l_start[at(i)]);
-        m_l_rows[at(next[at(i)]++)] = k;
-      }
+  std::vector<int> next(m_l_start.begin(), m_l_start.end() - 1);
+  for (int k = 0; k < n; ++k) {
+    for (int r = m_row_start[at(k)]; r < m_row_start[at(k) + 1]; ++r) {
+      const int i = m_row_columns[at(r)];
+      cost[at(k)] += 1 + (next[at(i)] - m_l_start[at(i)]);
+      m_l_rows[at(next[at(i)]++)] = k;
     }
   }
-  split_for_two_threads(parent, cost);
-
-  m_l_values.assign(m_l_rows.size(), Block::Zero());
-  m_diagonal_inverse.assign(at(n), Block::Zero());
-  m_work.assign(at(n), Block::Zero());
-  m_work_vector.assign(at(n), Eigen::Vector3d::Zero());
-  m_scalar_nonzeros = S.nonZeros();
-  m_blocks = n;
+  return cost;
 }
 
 void BlockCholesky::split_for_two_threads(const std::vector<int>& parent,

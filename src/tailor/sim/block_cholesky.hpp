@@ -51,6 +51,14 @@ class BlockCholesky {
  private:
   using Block = Eigen::Matrix3d;
 
+  // The stages of analyze(): the elimination order (m_order, m_rank); A's upper blocks in
+  // that order and where each scalar entry goes (m_a_*); the elimination tree and the
+  // pattern of every row of L (m_row_*); the rows of every column of L (m_l_start,
+  // m_l_rows), returning each row's cost in block updates.
+  void set_order(const SparseMatrix& graph, const std::vector<int>& order);
+  void map_upper_blocks(const SparseMatrix& S, const SparseMatrix& graph);
+  void row_patterns(std::vector<int>& parent, std::vector<int>& column_counts);
+  std::vector<double> column_rows(const std::vector<int>& column_counts);
   // Chooses m_rows from the elimination tree and each row's cost (block updates).
   void split_for_two_threads(const std::vector<int>& parent, const std::vector<double>& cost);
   // Factorises the given rows in increasing order; false when a diagonal block is not SPD.

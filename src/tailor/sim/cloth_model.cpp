@@ -250,7 +250,7 @@ struct ClothModel::Impl {
   }
 
   // Contact springs and friction of the arm's planes, added to A and b.
-  void add_contact_planes(const std::vector<ContactPlane>& contacts, const Positions& x0,
+  void add_contact_planes(std::span<const ContactPlane> contacts, const Positions& x0,
                           const Positions& v0, double h, Eigen::VectorXd& b) {
     double* values = pattern.valuePtr();
     // Contact springs: A += h² k n nᵀ, b += h (f0 - h k n (n·v0)), f0 = -k n (n·(x0 - q)).
@@ -514,10 +514,11 @@ ClothEnergy ClothModel::energy(const Positions& x, const Positions& v, const Vec
 }
 
 ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0,
-                               const Positions& pinned_targets, const Vec3& gravity, double h,
-                               Positions& x1, Positions& v1,
-                               const std::vector<ContactPlane>& contacts) {
+                               const ClothStepDrive& drive, Positions& x1, Positions& v1) {
   Impl& m = *m_impl;
+  const double h = drive.h;
+  const Positions none(0, 3);
+  const Positions& pinned_targets = drive.pinned_targets != nullptr ? *drive.pinned_targets : none;
   const Index n = 3 * m.nv;
   if (x0.rows() != m.nv || v0.rows() != m.nv) {
     throw InputError(fmt::format("cloth step: {} positions and {} velocities for {} vertices",
@@ -530,8 +531,8 @@ ClothStepInfo ClothModel::step(const Positions& x0, const Positions& v0,
   if (m.pinned_dirty) m.update_pinned_lists();
   const auto start = SteadyClock::now();
   Eigen::VectorXd b(n);
-  m.assemble_dynamics(x0, v0, gravity, h, b);
-  m.add_contact_planes(contacts, x0, v0, h, b);
+  m.assemble_dynamics(x0, v0, drive.gravity, h, b);
+  m.add_contact_planes(drive.contacts, x0, v0, h, b);
   const Eigen::VectorXd dv_pinned = m.eliminate_pinned(x0, v0, pinned_targets, h, b);
   SparseMatrix& A = m.pattern;
   const Eigen::Map<const Eigen::VectorXd> v(v0.data(), n);

@@ -11,6 +11,7 @@
 /// `(1 + h α) M + (h β + h²) K` is symmetric positive definite on the free vertices.
 
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "tailor/geometry/types.hpp"
@@ -79,6 +80,16 @@ struct ClothStepInfo {
   double solve_ms = 0;     ///< factorisation and solve (or CG)
 };
 
+/// What drives one ClothModel::step besides the cloth's start state.
+struct ClothStepDrive {
+  double h = 0;                 ///< step length (s)
+  Vec3 gravity = Vec3::Zero();  ///< acceleration (m/s²)
+  /// Row i: where pinned vertex `pinned()[i]` ends (null when nothing is pinned).
+  const Positions* pinned_targets = nullptr;
+  /// Contact springs (free vertices only) for this step only.
+  std::span<const ContactPlane> contacts;
+};
+
 /// Implicit cloth model on a fixed mesh.
 class ClothModel {
  public:
@@ -105,13 +116,10 @@ class ClothModel {
   /// Chooses the linear solver and, for block-Jacobi CG, the relative residual to reach.
   void set_solver(ClothSolver solver, double cg_tolerance = 1e-6);
 
-  /// One linearised implicit Euler step of length `h` from (x0, v0): writes the
-  /// candidate end positions `x1` and velocities `v1`. Pinned vertex `pinned()[i]` ends at
-  /// `pinned_targets.row(i)`. `gravity` is the acceleration (m/s²). `contacts` (free
-  /// vertices only) add their springs to this step only.
-  ClothStepInfo step(const Positions& x0, const Positions& v0, const Positions& pinned_targets,
-                     const Vec3& gravity, double h, Positions& x1, Positions& v1,
-                     const std::vector<ContactPlane>& contacts = {});
+  /// One linearised implicit Euler step of length `drive.h` from (x0, v0): writes the
+  /// candidate end positions `x1` and velocities `v1` (see ClothStepDrive).
+  ClothStepInfo step(const Positions& x0, const Positions& v0, const ClothStepDrive& drive,
+                     Positions& x1, Positions& v1);
 
   /// Membrane plus bending energy of positions `x` (J).
   double elastic_energy(const Positions& x) const;

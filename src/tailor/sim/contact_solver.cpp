@@ -199,8 +199,7 @@ struct ContactSolver::Impl {
   std::int64_t repel(Positions& x1) {
     std::int64_t count = 0;
     if (arm != nullptr && params.thickness > 0) {
-      count += repulsion.repel_obstacle(*x0, x1, *arm->mesh, arm->x0, arm->x1, params.thickness,
-                                        params.friction);
+      count += repulsion.repel_obstacle(*x0, x1, *arm, params.thickness, params.friction);
     }
     if (params.thickness > 0) count += repulsion.repel_cloth(*x0, x1, params.thickness, response);
     if (filter) filter(x1);
@@ -266,8 +265,10 @@ struct ContactSolver::Impl {
       stats.impact_zones = static_cast<std::int64_t>(groups.size());
       for (const auto& g : groups) {
         move_zone_rigidly(
-            g, *x0, response.inverse_mass(), pinned, follows,
-            [&](Index v) { return pinned[v] ? position(pinned_x1, v) : arm_target(v); }, x1);
+            g, *x0, response.inverse_mass(),
+            {pinned, follows,
+             [&](Index v) { return pinned[v] ? position(pinned_x1, v) : arm_target(v); }},
+            x1);
       }
     }
     return false;

@@ -14,18 +14,9 @@
 #include "tailor/detection/detection_stats.hpp"
 #include "tailor/mesh/triangle_mesh.hpp"
 #include "tailor/scene/contact_params.hpp"
+#include "tailor/sim/kinematic_obstacle.hpp"
 
 namespace tailor {
-
-/// A kinematic obstacle: its mesh and its positions at the start and end of the substep.
-struct KinematicObstacle {
-  /// The obstacle mesh (not owned).
-  const TriangleMesh* mesh = nullptr;
-  ///@{
-  /// Obstacle positions at the start and end of the substep.
-  Positions x0, x1;
-  ///@}
-};
 
 /// What one call to ContactSolver::resolve did.
 struct ContactStats {

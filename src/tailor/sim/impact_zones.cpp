@@ -7,9 +7,9 @@
 
 namespace tailor {
 void move_zone_rigidly(std::span<const Index> members, const Positions& x0,
-                       const Eigen::VectorXd& inverse_mass, std::span<const char> pinned,
-                       std::span<const char> follows, const std::function<Vec3(Index)>& target,
+                       const Eigen::VectorXd& inverse_mass, const KinematicVertices& prescribed,
                        Positions& x1) {
+  const auto& [pinned, follows, target] = prescribed;
   std::vector<Index> kinematic;
   for (Index v : members) {
     if (pinned[v] || follows[v]) kinematic.push_back(v);

@@ -39,15 +39,20 @@ class UnionFind {
   std::vector<Index> m_parent;
 };
 
+/// The vertices whose end positions are prescribed (the kinematic members of a zone).
+struct KinematicVertices {
+  std::span<const char> pinned;       ///< per vertex: pinned (its end position is already set)
+  std::span<const char> follows;      ///< per vertex: moves with the arm, to target(v)
+  std::function<Vec3(Index)> target;  ///< the prescribed end position of a kinematic vertex
+};
+
 /// Moves the zone `members` rigidly from `x0` into `x1`. A zone holding kinematic members
-/// (`pinned[v]`, or `follows[v]`: vertices whose end position `target(v)` is prescribed)
-/// moves with the rigid motion that best fits their prescribed motion (Kabsch), the
-/// kinematic members themselves going exactly to their targets (pinned ones are left
-/// alone). A zone without any moves with its members' mass-weighted mean linear and
-/// angular displacement (`inverse_mass` per vertex).
+/// (`kinematic.pinned[v]` or `kinematic.follows[v]`) moves with the rigid motion that best
+/// fits their prescribed motion (Kabsch), the kinematic members themselves going exactly to
+/// their targets (pinned ones are left alone). A zone without any moves with its members'
+/// mass-weighted mean linear and angular displacement (`inverse_mass` per vertex).
 void move_zone_rigidly(std::span<const Index> members, const Positions& x0,
-                       const Eigen::VectorXd& inverse_mass, std::span<const char> pinned,
-                       std::span<const char> follows, const std::function<Vec3(Index)>& target,
+                       const Eigen::VectorXd& inverse_mass, const KinematicVertices& kinematic,
                        Positions& x1);
 
 }  // namespace tailor

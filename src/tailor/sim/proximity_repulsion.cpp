@@ -46,8 +46,11 @@ ProximityRepulsion::ProximityRepulsion(const TriangleMesh& cloth, const Position
 }
 
 std::int64_t ProximityRepulsion::repel_obstacle(const Positions& x0, Positions& x1,
-                                                const TriangleMesh& m, const Positions& y0,
-                                                const Positions& y1, double h, double friction) {
+                                                const KinematicObstacle& obstacle, double h,
+                                                double friction) {
+  const TriangleMesh& m = *obstacle.mesh;
+  const Positions& y0 = obstacle.x0;
+  const Positions& y1 = obstacle.x1;
   const EndBoxes obstacle_boxes(m, y1, h);
   if (m_obstacle != &m || m_obstacle_faces.num_primitives() != m.num_faces()) {
     m_obstacle_faces = Bvh(obstacle_boxes.faces);

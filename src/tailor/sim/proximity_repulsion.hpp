@@ -10,6 +10,7 @@
 #include "tailor/bvh/bvh.hpp"
 #include "tailor/mesh/triangle_mesh.hpp"
 #include "tailor/sim/contact_response.hpp"
+#include "tailor/sim/kinematic_obstacle.hpp"
 
 namespace tailor {
 
@@ -24,9 +25,8 @@ class ProximityRepulsion {
   /// the end of the step out to that distance (along the direction to the closest point,
   /// or the face normal from inside), reducing its motion relative to the obstacle point
   /// by at most `friction` times the push. Returns the vertices pushed.
-  std::int64_t repel_obstacle(const Positions& x0, Positions& x1, const TriangleMesh& obstacle,
-                              const Positions& y0, const Positions& y1, double thickness,
-                              double friction);
+  std::int64_t repel_obstacle(const Positions& x0, Positions& x1, const KinematicObstacle& obstacle,
+                              double thickness, double friction);
 
   /// Vertex-face and edge-edge pairs of the cloth (sharing no vertex) closer than
   /// `thickness` at the end of the step, that were on the same side at the start, get a

@@ -210,7 +210,7 @@ struct Simulation::Impl {
     const std::vector<ContactPlane> planes = arm_contact_planes(
         arm_motion, {x, v, cloth.masses()}, h, arm_settings, {normal_forces, fixed, released});
     Positions x1, v1;
-    record.cloth = cloth.step(x, v, targets, config.gravity, h, x1, v1, planes);
+    record.cloth = cloth.step(x, v, {h, config.gravity, &targets, planes}, x1, v1);
     record.arm_contacts = finish_arm_contacts(planes, x1, released, normal_forces);
     // Strain limit and the implicit arm together (alternating projections); the
     // projection carries no friction here: friction acted in the solve.
