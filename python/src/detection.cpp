@@ -1,10 +1,12 @@
 /// @file
-/// `tailor.detect` (the one-off form), `tailor.brute_force`, `tailor.SelfCollisionDetector`
+/// `tailor.detect` (the one-off form), `tailor.brute_force`, `tailor.proximity_pairs` (one
+/// configuration), `tailor.SelfCollisionDetector`
 /// (for many steps of one mesh) and `tailor.DetectionResult` (DetectionConfig:
 /// detection_config.cpp).
 
 #include <fmt/format.h>
 #include <pybind11/stl.h>
+#include <tbb/task_arena.h>
 
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -14,6 +16,7 @@
 #include "bindings.hpp"
 #include "json_objects.hpp"
 #include "tailor/detection/brute_force.hpp"
+#include "tailor/detection/proximity_pairs.hpp"
 #include "tailor/detection/self_collision_detector.hpp"
 
 namespace tailor::python {
@@ -220,6 +223,37 @@ void bind_detection(py::module_& m) {
       "tailor::detect_self_collisions): `mesh` is a Mesh or (m, 3) faces; x0, x1 are (n, 3) "
       "positions at the start and end; `method` a preset name or a DetectionConfig. For many "
       "steps of one mesh, keep a SelfCollisionDetector (it builds its BVH once).");
+
+  m.def(
+      "proximity_pairs",
+      [](py::handle mesh_or_faces, py::handle x, double thickness, int threads) {
+        const Positions positions = to_positions(x, "x");
+        const MeshPtr mesh = mesh_from(mesh_or_faces, static_cast<Index>(positions.rows()));
+        ProximityPairs pairs;
+        {
+          py::gil_scoped_release release;
+          tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+          pairs = arena.execute([&] { return proximity_pairs(*mesh, positions, thickness); });
+        }
+        py::array_t<Index> vf({static_cast<py::ssize_t>(pairs.vertex_face.size()), py::ssize_t{2}});
+        py::array_t<Index> ee({static_cast<py::ssize_t>(pairs.edge_edge.size()), py::ssize_t{2}});
+        auto vf_out = vf.mutable_unchecked<2>();
+        auto ee_out = ee.mutable_unchecked<2>();
+        for (py::ssize_t i = 0; i < vf_out.shape(0); ++i) {
+          vf_out(i, 0) = pairs.vertex_face[static_cast<std::size_t>(i)].vertex;
+          vf_out(i, 1) = pairs.vertex_face[static_cast<std::size_t>(i)].face;
+        }
+        for (py::ssize_t i = 0; i < ee_out.shape(0); ++i) {
+          ee_out(i, 0) = pairs.edge_edge[static_cast<std::size_t>(i)].edge_a;
+          ee_out(i, 1) = pairs.edge_edge[static_cast<std::size_t>(i)].edge_b;
+        }
+        return py::make_tuple(vf, ee);
+      },
+      py::arg("mesh"), py::arg("x"), py::arg("thickness"), py::kw_only(), py::arg("threads") = 0,
+      "Every vertex-face and edge-edge pair of one configuration `x` ((n, 3) positions) "
+      "within `thickness` of each other, exactly (as C++ tailor::proximity_pairs): a tuple "
+      "(vertex_face, edge_edge) of (k, 2) arrays of (vertex, face) and (edge, edge) ids "
+      "(Mesh.edges numbering), sorted; pairs sharing a vertex are left out.");
 
   m.def(
       "brute_force",

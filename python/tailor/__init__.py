@@ -11,7 +11,8 @@ One step: ``tailor.detect(mesh, x0, x1, method="paper")``, the one-off form (C++
 built once). ``method`` is a preset name (basic, curtis, tang, paper) or a DetectionConfig;
 ``DetectionConfig.settings()`` lists every setting with its default, range and whether it
 keeps the result exact, ``DetectionResult.stat_fields()`` every key of ``result.stats``
-(docs/settings.md in the repository).
+(docs/settings.md in the repository). One configuration: ``proximity_pairs(mesh, x,
+thickness)``, every pair within a thickness (for repulsion and barrier methods).
 
 Arrays: positions are (n, 3) float64, faces (m, 3) integer vertex ids. float64
 C-contiguous arrays are read in place where the C++ API allows (CCD batches; the
@@ -34,6 +35,7 @@ from ._tailor import (
     SelfCollisionDetector,
     Simulation,
     brute_force,
+    proximity_pairs,
     ccd_edge_edge,
     ccd_vertex_face,
     check_sequence,
@@ -53,6 +55,7 @@ __all__ = [
     "SelfCollisionDetector",
     "Simulation",
     "brute_force",
+    "proximity_pairs",
     "ccd_edge_edge",
     "ccd_vertex_face",
     "check_sequence",

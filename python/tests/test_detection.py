@@ -234,3 +234,33 @@ def test_detection_releases_the_gil():
         return lambda: detector.detect(x0, x1)
 
     assert_releases_gil(make_call, max_scale=4096)
+
+
+def two_sheets(gap):
+    """Two flat 6 x 6 grids of unit size, the second `gap` above the first (z)."""
+    n = 7
+    xs, ys = np.meshgrid(np.linspace(0, 1, n), np.linspace(0, 1, n), indexing="ij")
+    sheet = np.stack([xs.ravel(), ys.ravel(), np.zeros(n * n)], axis=1)
+    quads = [(i * n + j, (i + 1) * n + j, (i + 1) * n + j + 1, i * n + j + 1)
+             for i in range(n - 1) for j in range(n - 1)]
+    faces = np.array([f for a, b, c, d in quads for f in ((a, b, c), (a, c, d))])
+    x = np.vstack([sheet, sheet + [0, 0, gap]])
+    return np.vstack([faces, faces + n * n]), x
+
+
+def test_proximity_pairs_are_exact_at_the_gap_sorted_and_thread_independent():
+    # In one sheet, non-incident features are at least spacing / sqrt(2) = 0.118 apart.
+    faces, x = two_sheets(0.0625)
+    vf, ee = tailor.proximity_pairs(faces, x, 0.0625)
+    assert vf.shape[1] == 2 and ee.shape[1] == 2 and len(vf) > 0 and len(ee) > 0
+    # Every vertex of one sheet is exactly the gap from the other sheet.
+    assert set(vf[:, 0].tolist()) == set(range(len(x)))
+    assert vf.tolist() == sorted(vf.tolist()) and ee.tolist() == sorted(ee.tolist())
+    below_vf, below_ee = tailor.proximity_pairs(faces, x, np.nextafter(0.0625, 0))
+    assert len(below_vf) == 0 and len(below_ee) == 0
+    one_vf, one_ee = tailor.proximity_pairs(tailor.Mesh(faces), x, 0.0625, threads=1)
+    assert np.array_equal(one_vf, vf) and np.array_equal(one_ee, ee)
+    with pytest.raises(tailor.InputError):
+        tailor.proximity_pairs(faces, x, -1.0)
+    with pytest.raises(tailor.InputError):
+        tailor.proximity_pairs(faces, x[:5], 0.1)

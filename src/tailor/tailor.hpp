@@ -36,5 +36,6 @@
 #include "tailor/detection/detection_config.hpp"
 #include "tailor/detection/detection_stats.hpp"
 #include "tailor/detection/intersection_check.hpp"
+#include "tailor/detection/proximity_pairs.hpp"
 #include "tailor/detection/self_collision_detector.hpp"
 #include "tailor/detection/sequence_check.hpp"

@@ -1,0 +1,142 @@
+/// @file
+/// Box culling with three BVHs, then the exact predicates in parallel.
+
+#include "tailor/detection/proximity_pairs.hpp"
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "tailor/bvh/aabb.hpp"
+#include "tailor/bvh/bvh.hpp"
+#include "tailor/bvh/feature_boxes.hpp"
+#include "tailor/ccd/proximity_predicates.hpp"
+#include "tailor/geometry/error.hpp"
+
+namespace tailor {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+void check_configuration(const TriangleMesh& mesh, const Positions& x, double thickness) {
+  if (x.rows() != mesh.num_vertices()) {
+    throw InputError(
+        fmt::format("proximity: {} positions for {} vertices", x.rows(), mesh.num_vertices()));
+  }
+  if (!x.allFinite()) throw InputError("proximity: a position is not finite");
+  if (!(thickness >= 0) || !std::isfinite(thickness)) {
+    throw InputError(
+        fmt::format("proximity: the thickness must be finite and >= 0, got {}", thickness));
+  }
+}
+
+/// The box of point p grown by `grow` on every side, rounded outwards (two ulps: the
+/// rounded sum is within half an ulp of the exact one).
+Aabb grown_point_box(const Vec3& p, double grow) {
+  Aabb box;
+  for (int k = 0; k < 3; ++k) {
+    box.min[k] = std::nextafter(std::nextafter(p[k] - grow, -kInf), -kInf);
+    box.max[k] = std::nextafter(std::nextafter(p[k] + grow, kInf), kInf);
+  }
+  return box;
+}
+
+FourPoints vertex_face_points(const TriangleMesh& mesh, const Positions& x, Index v, Index f) {
+  const auto face = mesh.faces().row(f);
+  return {position(x, v), position(x, face[0]), position(x, face[1]), position(x, face[2])};
+}
+
+FourPoints edge_edge_points(const TriangleMesh& mesh, const Positions& x, Index e, Index g) {
+  const auto a = mesh.edges().row(e), b = mesh.edges().row(g);
+  return {position(x, a[0]), position(x, a[1]), position(x, b[0]), position(x, b[1])};
+}
+
+bool face_holds(const TriangleMesh& mesh, Index f, Index v) {
+  const auto face = mesh.faces().row(f);
+  return face[0] == v || face[1] == v || face[2] == v;
+}
+
+bool edges_share_an_end(const TriangleMesh& mesh, Index e, Index g) {
+  const auto a = mesh.edges().row(e), b = mesh.edges().row(g);
+  return a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1];
+}
+
+/// Keeps the candidates the exact predicate accepts (in parallel; order kept).
+template <class Pair, class Within>
+std::vector<Pair> keep_within(std::vector<Pair> candidates, Within&& within) {
+  std::vector<char> keep(candidates.size(), 0);
+  tbb::parallel_for(std::size_t{0}, candidates.size(),
+                    [&](std::size_t i) { keep[i] = within(candidates[i]) ? 1 : 0; });
+  std::vector<Pair> kept;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (keep[i] != 0) kept.push_back(candidates[i]);
+  }
+  return kept;
+}
+
+}  // namespace
+
+ProximityPairs proximity_pairs(const TriangleMesh& mesh, const Positions& x, double thickness) {
+  check_configuration(mesh, x, thickness);
+  std::vector<Aabb> vertices(static_cast<std::size_t>(mesh.num_vertices()));
+  for (Index v = 0; v < mesh.num_vertices(); ++v) {
+    vertices[v] = grown_point_box(position(x, v), 0.5 * thickness);
+  }
+  std::vector<Aabb> edges(static_cast<std::size_t>(mesh.num_edges()));
+  std::vector<Aabb> faces(static_cast<std::size_t>(mesh.num_faces()));
+  bound_edges_and_faces(mesh, vertices, edges, faces);
+  const Bvh vertex_tree(vertices), edge_tree(edges), face_tree(faces);
+
+  std::vector<VertexFacePair> vf;
+  vertex_tree.for_each_overlapping_pair(face_tree, [&](Index v, Index f) {
+    if (!face_holds(mesh, f, v)) vf.push_back({v, f});
+  });
+  std::vector<EdgeEdgePair> ee;
+  edge_tree.for_each_self_overlapping_pair([&](Index e, Index g) {
+    if (!edges_share_an_end(mesh, e, g)) ee.push_back({std::min(e, g), std::max(e, g)});
+  });
+  const auto by_vertex = [](const VertexFacePair& a, const VertexFacePair& b) {
+    return a.vertex != b.vertex ? a.vertex < b.vertex : a.face < b.face;
+  };
+  const auto by_edges = [](const EdgeEdgePair& a, const EdgeEdgePair& b) {
+    return a.edge_a != b.edge_a ? a.edge_a < b.edge_a : a.edge_b < b.edge_b;
+  };
+  ProximityPairs pairs;
+  pairs.vertex_face = keep_within(std::move(vf), [&](const VertexFacePair& p) {
+    return vertex_face_within(vertex_face_points(mesh, x, p.vertex, p.face), thickness);
+  });
+  pairs.edge_edge = keep_within(std::move(ee), [&](const EdgeEdgePair& p) {
+    return edge_edge_within(edge_edge_points(mesh, x, p.edge_a, p.edge_b), thickness);
+  });
+  std::sort(pairs.vertex_face.begin(), pairs.vertex_face.end(), by_vertex);
+  std::sort(pairs.edge_edge.begin(), pairs.edge_edge.end(), by_edges);
+  return pairs;
+}
+
+ProximityPairs proximity_pairs_brute_force(const TriangleMesh& mesh, const Positions& x,
+                                           double thickness) {
+  check_configuration(mesh, x, thickness);
+  ProximityPairs pairs;
+  for (Index v = 0; v < mesh.num_vertices(); ++v) {
+    for (Index f = 0; f < mesh.num_faces(); ++f) {
+      if (!face_holds(mesh, f, v) &&
+          vertex_face_within(vertex_face_points(mesh, x, v, f), thickness)) {
+        pairs.vertex_face.push_back({v, f});
+      }
+    }
+  }
+  for (Index e = 0; e < mesh.num_edges(); ++e) {
+    for (Index g = e + 1; g < mesh.num_edges(); ++g) {
+      if (!edges_share_an_end(mesh, e, g) &&
+          edge_edge_within(edge_edge_points(mesh, x, e, g), thickness)) {
+        pairs.edge_edge.push_back({e, g});
+      }
+    }
+  }
+  return pairs;
+}
+
+}  // namespace tailor
