@@ -121,7 +121,7 @@ TEST(Rasterizer, NearerTriangleHidesFartherOneAndBackFacesUseTheBackColour) {
 
 /// A roof along the y axis seen from +z: ridge at x = 0, each side sloping down by
 /// `tilt_deg` (four faces of equal area, facing the camera).
-void roof(double tilt_deg, Positions& x, FaceArray& f) {
+void lit_roof(double tilt_deg, Positions& x, FaceArray& f) {
   const double drop = 0.5 * std::tan(tilt_deg * std::numbers::pi / 180.0);
   x.resize(6, 3);
   x << -0.5, -0.5, -drop, -0.5, 0.5, -drop, 0, -0.5, 0, 0, 0.5, 0, 0.5, -0.5, -drop, 0.5, 0.5,
@@ -136,7 +136,7 @@ Rasterizer draw_roof(double tilt_deg, Shading shading) {
   camera.eye = Vec3(0, 0, 3);
   Positions x;
   FaceArray faces;
-  roof(tilt_deg, x, faces);
+  lit_roof(tilt_deg, x, faces);
   Rasterizer raster(200, 200, camera, {255, 255, 255});
   const auto grey = [](Index) { return Rgb{200, 200, 200}; };
   ShadingOptions options;

@@ -1,0 +1,229 @@
+/// @file
+/// Earliest-first branch and bound over time with ball arithmetic on boxes of positions,
+/// and an exact rational decision on the narrowest intervals.
+
+#include "tailor/ccd/thickness_ccd.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+#include "tailor/ccd/proximity_conditions.hpp"
+
+namespace tailor {
+namespace {
+
+using detail::Ball;
+using detail::Truth;
+using detail::V3;
+
+/// The four moving points of a query: at t = 0 and t = 1.
+struct StepPoints {
+  FourPoints x0, x1;
+};
+
+/// The vectors between the four points over a time interval t, as balls: each difference
+/// is formed before the interval, (x0_i - x0_j) + t ((x1_i - x1_j) - (x0_i - x0_j)), so two
+/// points moving together give a difference as narrow as the rounding, not two boxes apart.
+struct BoxedStep {
+  const StepPoints& m;
+  Ball t;
+  V3<Ball> d(int i, int j) const {
+    const auto coordinate = [&](int k) {
+      const Ball start = Ball(m.x0[i][k]) - Ball(m.x0[j][k]);
+      const Ball end = Ball(m.x1[i][k]) - Ball(m.x1[j][k]);
+      return start + t * (end - start);
+    };
+    return {coordinate(0), coordinate(1), coordinate(2)};
+  }
+};
+
+/// The exact positions at the rational time t.
+detail::PointSet<mpq_class> exact_at(const StepPoints& m, const mpq_class& t) {
+  detail::PointSet<mpq_class> pts;
+  for (int i = 0; i < 4; ++i) {
+    const auto coordinate = [&](int k) {
+      return mpq_class(mpq_class(m.x0[i][k]) + t * (mpq_class(m.x1[i][k]) - mpq_class(m.x0[i][k])));
+    };
+    pts.x[static_cast<std::size_t>(i)] = {coordinate(0), coordinate(1), coordinate(2)};
+  }
+  return pts;
+}
+
+/// Whether the cross product of (i1 - i0) and (j1 - j0) is zero for the whole step: it is a
+/// quadratic in t, so zero at t = 0, 1/2 and 1 means zero everywhere (exact).
+bool normal_always_zero(const StepPoints& m, std::array<int, 4> ends) {
+  // Balls first: a component certainly nonzero at one time settles it (the usual case).
+  for (const double t : {0.0, 0.5, 1.0}) {
+    const BoxedStep at{m, Ball(t)};
+    const V3<Ball> n = cross(at.d(ends[1], ends[0]), at.d(ends[3], ends[2]));
+    if (n.x.nonzero() || n.y.nonzero() || n.z.nonzero()) return false;
+  }
+  for (const mpq_class& t : {mpq_class(0), mpq_class(1, 2), mpq_class(1)}) {
+    const detail::PointSet<mpq_class> pts = exact_at(m, t);
+    const V3<mpq_class> n = cross(pts.d(ends[1], ends[0]), pts.d(ends[3], ends[2]));
+    if (sgn(n.x) != 0 || sgn(n.y) != 0 || sgn(n.z) != 0) return false;
+  }
+  return true;
+}
+
+/// Whether points i and j coincide for the whole step.
+bool always_together(const StepPoints& m, int i, int j) {
+  return m.x0[i] == m.x0[j] && m.x1[i] == m.x1[j];
+}
+
+void check_query(const StepPoints& m, double h, const char* what) {
+  if (!(h > 0) || !std::isfinite(h)) {
+    throw std::invalid_argument(std::string(what) + ": the distance must be finite and > 0");
+  }
+  for (int i = 0; i < 4; ++i) {
+    if (!m.x0[i].allFinite() || !m.x1[i].allFinite()) {
+      throw std::invalid_argument(std::string(what) + ": non-finite coordinate");
+    }
+  }
+}
+
+/// The search over [0, 1]; `conditions(points, h2, never)` is the pair's proximity
+/// predicate over any number type, `speed` a bound on how fast its distance changes.
+template <class Conditions>
+class EarliestWithin {
+ public:
+  EarliestWithin(const StepPoints& m, double h, double speed, const detail::NeverPresent& never,
+                 Conditions conditions)
+      : m_(m),
+        h_(h),
+        speed_(speed),
+        never_(never),
+        conditions_(std::move(conditions)),
+        h2_(Ball(h) * Ball(h)),
+        exact_h2_(mpq_class(h) * mpq_class(h)),
+        // The narrowest interval: L w / 2 ≤ 1e-6 h (with room for rounding), and w ≤ 1e-6.
+        narrowest_(std::min(1e-6, 1.9e-6 * h / speed)) {}
+
+  ThicknessResult run() {
+    if (speed_ == 0) {  // nothing moves relative to the other primitive: one decision
+      result_.intervals = 1;
+      result_.hit = exactly_within(0.0, exact_h2_);
+      result_.toi = result_.hit ? 0.0 : 1.0;
+      return result_;
+    }
+    // Intervals still to look at, latest first, so the back is the earliest.
+    std::array<std::pair<double, double>, 128> stack;
+    int top = 0;
+    stack[top++] = {0.0, 1.0};
+    while (top > 0) {
+      const auto [lo, hi] = stack[--top];
+      ++result_.intervals;
+      const Truth within = conditions_(BoxedStep{m_, detail::ball_hull(lo, hi)}, h2_, never_);
+      if (within == Truth::no) continue;
+      if (within == Truth::yes) return hit(lo, false);
+      const double mid = 0.5 * lo + 0.5 * hi;
+      if (hi - lo <= kTryLipschitzBelow && clear_by_lipschitz(lo, hi, mid)) continue;
+      if (hi - lo <= narrowest_) {
+        // Narrow enough: within h √(1 + 2e-6) ≤ (1 + 1e-6) h at the midpoint, or clear.
+        if (exactly_within(mid, exact_h2_ * mpq_class(500001, 500000))) return hit(lo, false);
+        continue;
+      }
+      if (result_.intervals >= kMaxThicknessIntervals || mid <= lo || mid >= hi ||
+          top + 2 > static_cast<int>(stack.size())) {
+        // Not splittable (the cap, the stack, or the doubles' resolution). Within h at its
+        // end and at most 1e-6 wide: the first time is in the interval, and reported as
+        // its start; otherwise reported there conservatively (exhausted).
+        return hit(lo, hi - lo > 1e-6 || !exactly_within(hi, exact_h2_));
+      }
+      stack[top++] = {mid, hi};
+      stack[top++] = {lo, mid};
+    }
+    return result_;
+  }
+
+ private:
+  // Undecided intervals at most this wide try the Lipschitz exclusion first.
+  static constexpr double kTryLipschitzBelow = 1.0 / 16;
+
+  ThicknessResult hit(double toi, bool exhausted) {
+    result_.hit = true, result_.toi = toi, result_.exhausted = exhausted;
+    return result_;
+  }
+
+  /// Whether the exact positions at the time t are within sqrt(h2) (exact).
+  bool exactly_within(double t, const mpq_class& h2) const {
+    return conditions_(exact_at(m_, mpq_class(t)), h2, never_) == Truth::yes;
+  }
+
+  /// Farther than h + L w / 2 at the midpoint: no time of the interval comes within h.
+  /// Balls around the midpoint's positions first, exact positions when they cannot decide.
+  bool clear_by_lipschitz(double lo, double hi, double mid) const {
+    const double reach = (h_ + speed_ * (0.5 * (hi - lo))) * (1 + 1e-15);  // rounded up
+    const Truth at_mid =
+        conditions_(BoxedStep{m_, Ball(mid)}, Ball(Ball(reach) * Ball(reach)), never_);
+    if (at_mid != Truth::unknown) return at_mid == Truth::no;
+    return !exactly_within(mid, mpq_class(reach) * mpq_class(reach));
+  }
+
+  const StepPoints& m_;
+  double h_, speed_;
+  detail::NeverPresent never_;
+  Conditions conditions_;
+  Ball h2_;
+  mpq_class exact_h2_;
+  double narrowest_;
+  ThicknessResult result_;
+};
+
+template <class Conditions>
+ThicknessResult earliest_within(const StepPoints& m, double h, double speed,
+                                const detail::NeverPresent& never, Conditions&& conditions) {
+  return EarliestWithin<std::decay_t<Conditions>>(m, h, speed, never,
+                                                  std::forward<Conditions>(conditions))
+      .run();
+}
+
+/// An upper bound of the largest relative displacement |Δi - Δj| over the pairs (i, j):
+/// the point of one primitive and the point of the other are convex combinations of their
+/// corners, so their relative displacement is a convex combination of these (norms rounded
+/// up).
+double fastest_relative(const StepPoints& m, std::initializer_list<std::pair<int, int>> pairs) {
+  double v = 0;
+  for (const auto& [i, j] : pairs) {
+    v = std::max(v, ((m.x1[i] - m.x0[i]) - (m.x1[j] - m.x0[j])).norm());
+  }
+  return v * (1 + 1e-12);
+}
+
+}  // namespace
+
+ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& q, double h) {
+  const StepPoints m{{q.p_t0, q.a_t0, q.b_t0, q.c_t0}, {q.p_t1, q.a_t1, q.b_t1, q.c_t1}};
+  check_query(m, h, "vertex_face_ccd_within");
+  const double speed = fastest_relative(m, {{0, 1}, {0, 2}, {0, 3}});
+  detail::NeverPresent never;
+  never.normal = normal_always_zero(m, {1, 2, 1, 3});
+  never.segment = {always_together(m, 1, 2), always_together(m, 2, 3), always_together(m, 3, 1),
+                   false};
+  return earliest_within(m, h, speed, never,
+                         [](const auto& pts, const auto& h2, const detail::NeverPresent& n) {
+                           return detail::vertex_face(pts, h2, n);
+                         });
+}
+
+ThicknessResult edge_edge_ccd_within(const EdgeEdgeQuery& q, double h) {
+  const StepPoints m{{q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0},
+                     {q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1}};
+  check_query(m, h, "edge_edge_ccd_within");
+  const double speed = fastest_relative(m, {{0, 2}, {0, 3}, {1, 2}, {1, 3}});
+  detail::NeverPresent never;
+  never.normal = normal_always_zero(m, {0, 1, 2, 3});
+  const bool cd = always_together(m, 2, 3), ab = always_together(m, 0, 1);
+  never.segment = {cd, cd, ab, ab};
+  return earliest_within(m, h, speed, never,
+                         [](const auto& pts, const auto& h2, const detail::NeverPresent& n) {
+                           return detail::edge_edge(pts, h2, n);
+                         });
+}
+
+}  // namespace tailor

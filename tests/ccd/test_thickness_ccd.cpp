@@ -1,0 +1,156 @@
+/// @file
+/// Minimum-separation CCD: designed motions whose first time within h is known exactly
+/// (falling through a face, crossing edges, touching at t = 0 and t = 1, sliding parallel
+/// just outside h, a tiny h beside a large motion), and random motions against a
+/// long-double closest-point oracle sampled over the step, with h just above and just below
+/// the oracle's minimum distance.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+#include "support/closest_points.hpp"
+#include "support/sanitized.hpp"
+#include "tailor/ccd/thickness_ccd.hpp"
+
+namespace tailor {
+namespace {
+
+VertexFaceQuery falling_vertex(double z0, double z1) {
+  const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
+  return {Vec3(0.25, 0.25, z0), a, b, c, Vec3(0.25, 0.25, z1), a, b, c};
+}
+
+/// A result's time is a lower bound of `first` and within 1e-6 of it.
+void expect_first_time(const ThicknessResult& r, double first) {
+  ASSERT_TRUE(r.hit);
+  EXPECT_FALSE(r.exhausted);
+  EXPECT_LE(r.toi, first);
+  EXPECT_GE(r.toi, first - 1e-6);
+}
+
+TEST(ThicknessCcd, VertexFallingThroughAFaceComesWithinHWhenExpected) {
+  // z(t) = 1 - 2t: within 0.5 from t = 0.25.
+  expect_first_time(vertex_face_ccd_within(falling_vertex(1, -1), 0.5), 0.25);
+  // Stopping at 0.5 exactly touches the thickness at t = 1.
+  expect_first_time(vertex_face_ccd_within(falling_vertex(1, 0.5), 0.5), 1.0);
+  // Stopping 1e-3 short of it: no hit.
+  const ThicknessResult short_of = vertex_face_ccd_within(falling_vertex(1, 0.5005), 0.5);
+  EXPECT_FALSE(short_of.hit);
+  EXPECT_FALSE(short_of.exhausted);
+  // Starting within: at t = 0.
+  expect_first_time(vertex_face_ccd_within(falling_vertex(0.25, 2), 0.5), 0.0);
+  // A tiny thickness beside a unit motion: the first time is 0.5 - 5e-13.
+  expect_first_time(vertex_face_ccd_within(falling_vertex(1, -1), 1e-12), 0.5 - 5e-13);
+}
+
+TEST(ThicknessCcd, VertexPassingBesideTheFaceUsesTheEdgesAndCorners) {
+  const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
+  // Moving along y = -0.25 (beside edge ab) at height 0: distance 0.25 while over the edge.
+  const VertexFaceQuery beside{Vec3(-2, -0.25, 0), a, b, c, Vec3(2, -0.25, 0), a, b, c};
+  // x(t) = -2 + 4t; within 0.25 of corner a from x = 0 on: t = 0.5 (distance to ab is
+  // 0.25 exactly on 0 <= x <= 1).
+  expect_first_time(vertex_face_ccd_within(beside, 0.25), 0.5);
+  EXPECT_FALSE(vertex_face_ccd_within(beside, 0.2499).hit);
+}
+
+TEST(ThicknessCcd, EdgesCrossingAndSlidingParallel) {
+  // Edge cd crosses over ab from z = 1 to z = -1: distance |1 - 2t|, within 0.25 at 0.375.
+  const EdgeEdgeQuery crossing{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, -1, 1),  Vec3(0.5, 1, 1),
+                               Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, -1, -1), Vec3(0.5, 1, -1)};
+  expect_first_time(edge_edge_ccd_within(crossing, 0.25), 0.375);
+  // Parallel edges 0.3 apart sliding past each other: within 0.3 the whole time, not within
+  // 0.2997 ever.
+  const EdgeEdgeQuery sliding{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(-2, 0.3, 0), Vec3(-1, 0.3, 0),
+                              Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0.3, 0),  Vec3(3, 0.3, 0)};
+  // Overlapping in x only for t in [0.25, 0.75]; before, the ends are farther.
+  expect_first_time(edge_edge_ccd_within(sliding, 0.3), 0.25);
+  const ThicknessResult outside = edge_edge_ccd_within(sliding, 0.2997);
+  EXPECT_FALSE(outside.hit);
+  EXPECT_FALSE(outside.exhausted);
+}
+
+TEST(ThicknessCcd, NothingMovingIsOneExactDecision) {
+  const ThicknessResult still = vertex_face_ccd_within(falling_vertex(0.5, 0.5), 0.5);
+  EXPECT_TRUE(still.hit);
+  EXPECT_EQ(still.toi, 0.0);
+  EXPECT_FALSE(vertex_face_ccd_within(falling_vertex(0.5, 0.5), std::nextafter(0.5, 0)).hit);
+}
+
+TEST(ThicknessCcd, BadInputIsRefused) {
+  EXPECT_THROW(vertex_face_ccd_within(falling_vertex(1, -1), 0), std::invalid_argument);
+  EXPECT_THROW(vertex_face_ccd_within(falling_vertex(1, std::nan("")), 0.1), std::invalid_argument);
+  EdgeEdgeQuery bad{};
+  bad.ea0_t1.x() = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(edge_edge_ccd_within(bad, 0.1), std::invalid_argument);
+}
+
+/// The oracle's distance over the step, sampled: its minimum and the first sample within h.
+struct Sampled {
+  long double minimum = 1e300L;
+  double first_within = 2;  // > 1: never
+};
+
+template <class Distance>
+Sampled sample(Distance&& distance, long double h, int samples) {
+  Sampled s;
+  for (int i = 0; i <= samples; ++i) {
+    const double t = static_cast<double>(i) / samples;
+    const long double d = distance(t);
+    s.minimum = std::min(s.minimum, d);
+    if (d <= h && s.first_within > 1) s.first_within = t;
+  }
+  return s;
+}
+
+TEST(ThicknessCcd, RandomMotionsAgreeWithTheSampledOracle) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> coordinate(-1, 1), step(-0.5, 0.5);
+  const auto point = [&] { return Vec3(coordinate(rng), coordinate(rng), coordinate(rng)); };
+  const auto moved = [&](const Vec3& p) { return Vec3(p + Vec3(step(rng), step(rng), step(rng))); };
+  const int runs = testing::sanitized() ? 100 : 1000, samples = 4000;
+  int hits = 0, exhausted = 0;
+  for (int i = 0; i < runs; ++i) {
+    const FourPoints x0{point(), point(), point(), point()};
+    const FourPoints x1{moved(x0[0]), moved(x0[1]), moved(x0[2]), moved(x0[3])};
+    const auto at = [&](int k, double t) {
+      return testing::wide(Vec3((1 - t) * x0[k] + t * x1[k]));
+    };
+    const auto vf = [&](double t) {
+      return testing::point_triangle_distance(at(0, t), at(1, t), at(2, t), at(3, t));
+    };
+    const auto ee = [&](double t) {
+      return testing::segment_distance(at(0, t), at(1, t), at(2, t), at(3, t));
+    };
+    const VertexFaceQuery vq{x0[0], x0[1], x0[2], x0[3], x1[0], x1[1], x1[2], x1[3]};
+    const EdgeEdgeQuery eq{x0[0], x0[1], x0[2], x0[3], x1[0], x1[1], x1[2], x1[3]};
+    for (const bool face : {true, false}) {
+      const Sampled s0 = face ? sample(vf, 0, samples) : sample(ee, 0, samples);
+      if (s0.minimum < 1e-3) continue;  // the pair touches: h = 0 is the exact CCD's job
+      // Just above the sampled minimum: within h, at or before the first sample within h.
+      const double above = static_cast<double>(s0.minimum * (1 + 1e-3L));
+      const Sampled s = face ? sample(vf, above, samples) : sample(ee, above, samples);
+      const ThicknessResult r =
+          face ? vertex_face_ccd_within(vq, above) : edge_edge_ccd_within(eq, above);
+      ASSERT_TRUE(r.hit) << i << (face ? " vf" : " ee");
+      EXPECT_LE(r.toi, s.first_within + 1e-12) << i;
+      ++hits;
+      exhausted += r.exhausted;
+      // Below the true minimum (the sampled one is an upper bound of it): the sampled
+      // minimum can only overestimate by the sampling gap, far below 1e-3 relative here.
+      const double under = static_cast<double>(s0.minimum * (1 - 1e-3L));
+      const ThicknessResult miss =
+          face ? vertex_face_ccd_within(vq, under) : edge_edge_ccd_within(eq, under);
+      EXPECT_FALSE(miss.hit && !miss.exhausted) << i << (face ? " vf" : " ee");
+      exhausted += miss.exhausted;
+    }
+  }
+  EXPECT_GT(hits, runs);  // most motions were tested both ways
+  EXPECT_EQ(exhausted, 0);
+}
+
+}  // namespace
+}  // namespace tailor
