@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -123,6 +124,10 @@ int run_detect(const DetectArgs& args) {
   }
   fmt::print("collisions : {} vertex-face, {} edge-edge\n", collisions.vertex_face.size(),
              collisions.edge_edge.size());
+  double first = 1.0;  // the collision-free fraction of the step (collision_free_step)
+  for (const auto& c : collisions.vertex_face) first = std::min(first, c.toi);
+  for (const auto& c : collisions.edge_edge) first = std::min(first, c.toi);
+  if (collisions.size() > 0) fmt::print("first toi  : {:.9g}\n", first);
   if (!args.json_path.empty()) {
     out["collisions"] = collisions_json(collisions);
     std::ofstream file(args.json_path);

@@ -1,6 +1,6 @@
 /// @file
 /// `tailor.detect` (the one-off form), `tailor.brute_force`, `tailor.proximity_pairs` (one
-/// configuration), `tailor.SelfCollisionDetector`
+/// configuration), `tailor.collision_free_step`, `tailor.SelfCollisionDetector`
 /// (for many steps of one mesh) and `tailor.DetectionResult` (DetectionConfig:
 /// detection_config.cpp).
 
@@ -16,6 +16,7 @@
 #include "bindings.hpp"
 #include "json_objects.hpp"
 #include "tailor/detection/brute_force.hpp"
+#include "tailor/detection/collision_free_step.hpp"
 #include "tailor/detection/proximity_pairs.hpp"
 #include "tailor/detection/self_collision_detector.hpp"
 
@@ -208,8 +209,9 @@ void bind_detection(py::module_& m) {
   m.def(
       "detect",
       [](py::handle mesh_or_faces, py::handle x0, py::handle x1, py::handle method, int threads,
-         py::handle observers) {
-        const DetectionConfig config = detection_config(method, threads);
+         py::handle observers, double thickness) {
+        DetectionConfig config = detection_config(method, threads);
+        if (thickness != 0) config.thickness = thickness;
         const DoubleArray start = float64_rows(x0, "x0");  // converted at most once
         std::vector<std::vector<Index>> loops;
         if (!observers.is_none()) loops = to_index_lists(observers, "observers");
@@ -218,11 +220,46 @@ void bind_detection(py::module_& m) {
         return detector.detect(py::none(), x1);
       },
       py::arg("mesh"), py::arg("x0"), py::arg("x1"), py::kw_only(), py::arg("method") = "paper",
-      py::arg("threads") = 0, py::arg("observers") = py::none(),
+      py::arg("threads") = 0, py::arg("observers") = py::none(), py::arg("thickness") = 0.0,
       "Every self-collision of one step (the one-off form, as C++ "
       "tailor::detect_self_collisions): `mesh` is a Mesh or (m, 3) faces; x0, x1 are (n, 3) "
-      "positions at the start and end; `method` a preset name or a DetectionConfig. For many "
-      "steps of one mesh, keep a SelfCollisionDetector (it builds its BVH once).");
+      "positions at the start and end; `method` a preset name or a DetectionConfig; "
+      "`thickness` > 0: every pair that comes within it, at the earliest such time "
+      "(DetectionConfig.thickness). For many steps of one mesh, keep a SelfCollisionDetector "
+      "(it builds its BVH once).");
+
+  m.def(
+      "collision_free_step",
+      [](py::handle mesh_or_faces, py::handle x0, py::handle x1, double thickness, int threads) {
+        const Positions p0 = to_positions(x0, "x0");
+        const Positions p1 = to_positions(x1, "x1");
+        const MeshPtr mesh = mesh_from(mesh_or_faces, static_cast<Index>(p0.rows()));
+        DetectionConfig config;
+        config.threads = threads;
+        CollisionFreeStep step;
+        {
+          py::gil_scoped_release release;
+          step = collision_free_step(*mesh, p0, p1, thickness, config);
+        }
+        py::dict out;
+        out["alpha"] = step.alpha;
+        out["vertex_face"] = step.vertex_face
+                                 ? py::object(py::make_tuple(step.vertex_face->vertex,
+                                                             step.vertex_face->face))
+                                 : py::object(py::none());
+        out["edge_edge"] = step.edge_edge
+                               ? py::object(py::make_tuple(step.edge_edge->a0, step.edge_edge->a1,
+                                                           step.edge_edge->b0, step.edge_edge->b1))
+                               : py::object(py::none());
+        return out;
+      },
+      py::arg("mesh"), py::arg("x0"), py::arg("x1"), py::arg("thickness"), py::kw_only(),
+      py::arg("threads") = 0,
+      "The largest fraction alpha of the step from x0 to x1 that keeps every pair sharing no "
+      "vertex farther apart than `thickness` (0: never touching), a certified lower bound "
+      "within 1e-6 (as C++ tailor::collision_free_step): a dict with 'alpha' and the pair that "
+      "limits it, 'vertex_face' (vertex, face) or 'edge_edge' (a0, a1, b0, b1), None when "
+      "nothing does.");
 
   m.def(
       "proximity_pairs",

@@ -27,6 +27,9 @@ template <class T>
 std::string python_literal(T value) {
   if constexpr (std::is_same_v<T, bool>) {
     return value ? "True" : "False";
+  } else if constexpr (std::is_same_v<T, double>) {
+    const std::string text = fmt::format("{}", value);  // repr keeps a whole number's ".0"
+    return text.find_first_of(".en") == std::string::npos ? text + ".0" : text;
   } else {
     return fmt::format("{}", value);
   }

@@ -12,7 +12,10 @@ built once). ``method`` is a preset name (basic, curtis, tang, paper) or a Detec
 ``DetectionConfig.settings()`` lists every setting with its default, range and whether it
 keeps the result exact, ``DetectionResult.stat_fields()`` every key of ``result.stats``
 (docs/settings.md in the repository). One configuration: ``proximity_pairs(mesh, x,
-thickness)``, every pair within a thickness (for repulsion and barrier methods).
+thickness)``, every pair within a thickness (for repulsion and barrier methods). With a
+thickness: ``detect(..., thickness=h)`` (every pair that comes within h, at the earliest
+time) and ``collision_free_step(mesh, x0, x1, h)`` (the fraction of a step that keeps
+every pair farther than h apart).
 
 Arrays: positions are (n, 3) float64, faces (m, 3) integer vertex ids. float64
 C-contiguous arrays are read in place where the C++ API allows (CCD batches; the
@@ -35,6 +38,7 @@ from ._tailor import (
     SelfCollisionDetector,
     Simulation,
     brute_force,
+    collision_free_step,
     proximity_pairs,
     ccd_edge_edge,
     ccd_vertex_face,
@@ -55,6 +59,7 @@ __all__ = [
     "SelfCollisionDetector",
     "Simulation",
     "brute_force",
+    "collision_free_step",
     "proximity_pairs",
     "ccd_edge_edge",
     "ccd_vertex_face",

@@ -264,3 +264,29 @@ def test_proximity_pairs_are_exact_at_the_gap_sorted_and_thread_independent():
         tailor.proximity_pairs(faces, x, -1.0)
     with pytest.raises(tailor.InputError):
         tailor.proximity_pairs(faces, x[:5], 0.1)
+
+
+def test_thickness_detection_and_collision_free_step():
+    # Two unit squares 1 apart, the upper one falling by 1: within 0.25 from t = 0.75.
+    faces = np.array([[0, 1, 2], [0, 2, 3], [4, 5, 6], [4, 6, 7]])
+    x0 = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0],
+                   [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]], dtype=float)
+    x1 = x0.copy()
+    x1[4:, 2] -= 1.0
+    within = tailor.detect(faces, x0, x1, thickness=0.25)
+    assert 0.75 - 1e-6 <= within.toi.min() <= 0.75
+    short = x0.copy()
+    short[4:, 2] -= 0.9  # ends 0.1 apart: never touching, within 0.25 from t = 0.75 / 0.9
+    assert len(tailor.detect(faces, x0, short)) == 0
+    assert len(tailor.detect(faces, x0, short, thickness=0.25)) > 0
+    step = tailor.collision_free_step(faces, x0, x1, 0.25)
+    assert 0.75 - 1e-6 <= step["alpha"] <= 0.75
+    assert step["vertex_face"] is not None or step["edge_edge"] is not None
+    free = tailor.collision_free_step(faces, x0, x0 + [0, 0, 0.1], 0.25)
+    assert free == {"alpha": 1.0, "vertex_face": None, "edge_edge": None}
+    config = tailor.DetectionConfig()
+    config.thickness = 0.25
+    assert np.array_equal(tailor.detect(faces, x0, short, method=config).vertex_face,
+                          tailor.detect(faces, x0, short, thickness=0.25).vertex_face)
+    with pytest.raises(tailor.InputError):
+        tailor.detect(faces, x0, x1, thickness=-1.0)

@@ -31,6 +31,7 @@
 #include "tailor/io/mesh_io.hpp"
 #include "tailor/io/observer_loops.hpp"
 #include "tailor/detection/brute_force.hpp"
+#include "tailor/detection/collision_free_step.hpp"
 #include "tailor/detection/collision.hpp"
 #include "tailor/detection/detect_self_collisions.hpp"
 #include "tailor/detection/detection_config.hpp"

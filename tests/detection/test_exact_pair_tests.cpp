@@ -90,7 +90,7 @@ TEST(ExactPairTester, EveryPairInBlocksGivesTheBruteForceCollisions) {
       EXPECT_EQ(ee_list(blocks), ee_list(expected)) << threads << " threads";
 
       const CollisionSet one_batch =
-          test_pairs_exactly(mesh, step.x0, step.x1, vertex_face, edge_edge);
+          test_pairs_exactly(mesh, step.x0, step.x1, {vertex_face, edge_edge});
       EXPECT_EQ(vf_list(one_batch), vf_list(expected)) << threads << " threads";
       EXPECT_EQ(ee_list(one_batch), ee_list(expected)) << threads << " threads";
     });

@@ -2,6 +2,7 @@
 /// @file
 /// Axis-aligned bounding boxes.
 
+#include <cmath>
 #include <Eigen/Core>
 #include <initializer_list>
 #include <limits>
@@ -35,6 +36,18 @@ struct Aabb {
   /// Extent max - min per axis (negative for an empty box).
   Vec3 diagonal() const { return (max - min).matrix(); }
 };
+
+/// `box` grown by `by` (≥ 0) on every side, rounded outwards: each bound moves two ulps
+/// beyond the rounded sum, which is within half an ulp of the exact one.
+inline Aabb grown_outwards(const Aabb& box, double by) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  Aabb grown;
+  for (int k = 0; k < 3; ++k) {
+    grown.min[k] = std::nextafter(std::nextafter(box.min[k] - by, -kInf), -kInf);
+    grown.max[k] = std::nextafter(std::nextafter(box.max[k] + by, kInf), kInf);
+  }
+  return grown;
+}
 
 /// Box of the given vertices at t=0 and t=1: a primitive moving linearly stays inside it
 /// for the whole step.

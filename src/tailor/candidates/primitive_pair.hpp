@@ -2,6 +2,8 @@
 /// @file
 /// Candidate primitive pairs: the output of low-level culling and the input of the exact CCD.
 
+#include <vector>
+
 #include "tailor/geometry/types.hpp"
 
 namespace tailor {
@@ -20,6 +22,12 @@ struct EdgeEdgePair {
   /// Edge ids (-1 when unset).
   Index edge_a = -1, edge_b = -1;
   ///@}
+};
+
+/// Vertex-face and edge-edge pairs of one mesh.
+struct FeaturePairs {
+  std::vector<VertexFacePair> vertex_face;  ///< vertex-face pairs
+  std::vector<EdgeEdgePair> edge_edge;      ///< edge-edge pairs
 };
 
 }  // namespace tailor

@@ -107,7 +107,9 @@ class EarliestWithin {
   ThicknessResult run() {
     if (speed_ == 0) {  // nothing moves relative to the other primitive: one decision
       result_.intervals = 1;
-      result_.hit = exactly_within(0.0, exact_h2_);
+      const Truth at_start = conditions_(BoxedStep{m_, Ball(0.0)}, h2_, never_);
+      result_.hit = at_start == Truth::unknown ? exactly_within(0.0, exact_h2_)
+                                               : at_start == Truth::yes;
       result_.toi = result_.hit ? 0.0 : 1.0;
       return result_;
     }
@@ -122,7 +124,7 @@ class EarliestWithin {
       if (within == Truth::no) continue;
       if (within == Truth::yes) return hit(lo, false);
       const double mid = 0.5 * lo + 0.5 * hi;
-      if (hi - lo <= kTryLipschitzBelow && clear_by_lipschitz(lo, hi, mid)) continue;
+      if (clear_by_lipschitz(lo, hi, mid, hi - lo <= kExactLipschitzBelow)) continue;
       if (hi - lo <= narrowest_) {
         // Narrow enough: within h √(1 + 2e-6) ≤ (1 + 1e-6) h at the midpoint, or clear.
         if (exactly_within(mid, exact_h2_ * mpq_class(500001, 500000))) return hit(lo, false);
@@ -142,8 +144,9 @@ class EarliestWithin {
   }
 
  private:
-  // Undecided intervals at most this wide try the Lipschitz exclusion first.
-  static constexpr double kTryLipschitzBelow = 1.0 / 16;
+  // Undecided intervals try the Lipschitz exclusion in balls; those at most this wide also
+  // in exact rationals when the balls cannot decide (slow, and rarely decisive wider).
+  static constexpr double kExactLipschitzBelow = 1.0 / 16;
 
   ThicknessResult hit(double toi, bool exhausted) {
     result_.hit = true, result_.toi = toi, result_.exhausted = exhausted;
@@ -157,11 +160,11 @@ class EarliestWithin {
 
   /// Farther than h + L w / 2 at the midpoint: no time of the interval comes within h.
   /// Balls around the midpoint's positions first, exact positions when they cannot decide.
-  bool clear_by_lipschitz(double lo, double hi, double mid) const {
+  bool clear_by_lipschitz(double lo, double hi, double mid, bool exact) const {
     const double reach = (h_ + speed_ * (0.5 * (hi - lo))) * (1 + 1e-15);  // rounded up
     const Truth at_mid =
         conditions_(BoxedStep{m_, Ball(mid)}, Ball(Ball(reach) * Ball(reach)), never_);
-    if (at_mid != Truth::unknown) return at_mid == Truth::no;
+    if (at_mid != Truth::unknown || !exact) return at_mid == Truth::no;
     return !exactly_within(mid, mpq_class(reach) * mpq_class(reach));
   }
 

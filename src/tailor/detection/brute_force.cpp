@@ -43,14 +43,18 @@ class SortedBoxes {
 }  // namespace
 
 CollisionSet brute_force_self_collisions(const TriangleMesh& mesh, const Positions& x0,
-                                         const Positions& x1) {
+                                         const Positions& x1, double thickness) {
   const FaceArray& faces = mesh.faces();
   const EdgeArray& edges = mesh.edges();
+  const auto grow = [&](const Aabb& box) {
+    return thickness > 0 ? grown_outwards(box, 0.5 * thickness) : box;
+  };
   std::vector<Aabb> face_boxes(static_cast<std::size_t>(mesh.num_faces()));
   swept_face_boxes(faces, x0, x1, face_boxes);
+  for (Aabb& box : face_boxes) box = grow(box);
   std::vector<Aabb> edge_boxes(static_cast<std::size_t>(mesh.num_edges()));
   for (Index e = 0; e < mesh.num_edges(); ++e) {
-    edge_boxes[e] = swept_box(x0, x1, {edges(e, 0), edges(e, 1)});
+    edge_boxes[e] = grow(swept_box(x0, x1, {edges(e, 0), edges(e, 1)}));
   }
   const SortedBoxes sorted_faces(std::move(face_boxes));
   const SortedBoxes sorted_edges(edge_boxes);
@@ -60,7 +64,7 @@ CollisionSet brute_force_self_collisions(const TriangleMesh& mesh, const Positio
   tbb::parallel_for(Index{0}, mesh.num_vertices(), [&](Index v) {
     if (mesh.vertex_faces(v).empty()) return;
     auto& out = vf_pairs.local();
-    sorted_faces.for_each_overlapping(swept_box(x0, x1, {v}), [&](Index f) {
+    sorted_faces.for_each_overlapping(grow(swept_box(x0, x1, {v})), [&](Index f) {
       if (faces(f, 0) != v && faces(f, 1) != v && faces(f, 2) != v) out.push_back({v, f});
     });
   });
@@ -77,7 +81,7 @@ CollisionSet brute_force_self_collisions(const TriangleMesh& mesh, const Positio
   for (auto& v : vf_pairs) all_vf.insert(all_vf.end(), v.begin(), v.end());
   std::vector<EdgeEdgePair> all_ee;
   for (auto& v : ee_pairs) all_ee.insert(all_ee.end(), v.begin(), v.end());
-  return test_pairs_exactly(mesh, x0, x1, all_vf, all_ee);
+  return test_pairs_exactly(mesh, x0, x1, {all_vf, all_ee}, thickness);
 }
 
 }  // namespace tailor

@@ -53,8 +53,13 @@ std::string setting_value(const DetectionConfig& config, const DetectionSetting&
   return std::visit(
       [&](auto member) -> std::string {
         const auto value = config.*member;
-        if constexpr (std::is_same_v<std::remove_cv_t<decltype(value)>, bool>) {
+        using Value = std::remove_cv_t<decltype(value)>;
+        if constexpr (std::is_same_v<Value, bool>) {
           return value ? "true" : "false";
+        } else if constexpr (std::is_same_v<Value, double>) {
+          // As JSON and Python write it: a whole number keeps its ".0".
+          const std::string text = fmt::format("{}", value);
+          return text.find_first_of(".en") == std::string::npos ? text + ".0" : text;
         } else {
           return fmt::format("{}", value);
         }

@@ -67,6 +67,10 @@ inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
          "(candidates/projection_filter.hpp)")                                                    \
   SWITCH(radial_view, true, "radial", work_only,                                                  \
          "radial-view culling, where observers (section loops) are given")                        \
+  NUMBER(double, thickness, 0.0, 0, 1e300, "thickness", defines_result,                           \
+         "collisions with a thickness: report each pair that comes within this distance during "  \
+         "the step, at the earliest such time (0: touching); above 0 only swept boxes grown by "  \
+         "half of it cull, the other stages are off (ccd/thickness_ccd.hpp)")                     \
   NUMBER(int, threads, 0, 0, kUnbounded, "threads", work_only,                                    \
          "worker threads (0: all hardware threads)")                                              \
   SWITCH(classify_every_cluster, false, "classify-every-cluster", output_only,                    \

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "tailor/ccd/thickness_ccd.hpp"
 #include "tailor/ccd/ccd.hpp"
 
 namespace tailor {
@@ -78,8 +79,14 @@ void ExactPairTester::test(const TriangleMesh& mesh, const Positions& x0, const 
       for (std::size_t i = chunk.begin; i < chunk.end; ++i) {
         const auto [v, f] = pairs[i];
         const Index a = faces(f, 0), b = faces(f, 1), c = faces(f, 2);
-        const CcdResult result = vertex_face_ccd({x0.row(v), x0.row(a), x0.row(b), x0.row(c),
-                                                  x1.row(v), x1.row(a), x1.row(b), x1.row(c)});
+        const VertexFaceQuery query{x0.row(v), x0.row(a), x0.row(b), x0.row(c),
+                                    x1.row(v), x1.row(a), x1.row(b), x1.row(c)};
+        if (m_thickness > 0) {
+          const ThicknessResult result = vertex_face_ccd_within(query, m_thickness);
+          if (result.hit) out.vertex_face.push_back({v, f, result.toi});
+          continue;
+        }
+        const CcdResult result = vertex_face_ccd(query);
         out.exact += result.path == CcdPath::exact || result.path == CcdPath::gmp;
         if (result.hit) out.vertex_face.push_back({v, f, result.toi});
       }
@@ -89,8 +96,14 @@ void ExactPairTester::test(const TriangleMesh& mesh, const Positions& x0, const 
         const auto [e1, e2] = pairs[i];
         const Index a = edges(e1, 0), b = edges(e1, 1);
         const Index c = edges(e2, 0), d = edges(e2, 1);
-        const CcdResult result = edge_edge_ccd({x0.row(a), x0.row(b), x0.row(c), x0.row(d),
-                                                x1.row(a), x1.row(b), x1.row(c), x1.row(d)});
+        const EdgeEdgeQuery query{x0.row(a), x0.row(b), x0.row(c), x0.row(d),
+                                  x1.row(a), x1.row(b), x1.row(c), x1.row(d)};
+        if (m_thickness > 0) {
+          const ThicknessResult result = edge_edge_ccd_within(query, m_thickness);
+          if (result.hit) out.edge_edge.push_back({e1, e2, result.toi});
+          continue;
+        }
+        const CcdResult result = edge_edge_ccd(query);
         out.exact += result.path == CcdPath::exact || result.path == CcdPath::gmp;
         if (result.hit) out.edge_edge.push_back({e1, e2, result.toi});
       }
@@ -128,11 +141,11 @@ std::int64_t ExactPairTester::exact_fallbacks() const {
 }
 
 CollisionSet test_pairs_exactly(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
-                                std::span<const VertexFacePair> vertex_face,
-                                std::span<const EdgeEdgePair> edge_edge,
+                                CandidateBatch batch, double thickness,
                                 std::int64_t* exact_fallbacks) {
   ExactPairTester tester;
-  tester.test(mesh, x0, x1, vertex_face, edge_edge);
+  tester.set_thickness(thickness);
+  tester.test(mesh, x0, x1, batch.vertex_face, batch.edge_edge);
   if (exact_fallbacks != nullptr) *exact_fallbacks = tester.exact_fallbacks();
   return tester.take_collisions(mesh);
 }

@@ -23,6 +23,10 @@ class ExactPairTester {
  public:
   /// Starts a step: no collisions, no counts.
   void begin_step();
+  /// From now on a pair counts when it comes within `thickness` (> 0) during the step, at
+  /// the earliest such time (ccd/thickness_ccd.hpp); 0, the default, is touching (the
+  /// exact CCD).
+  void set_thickness(double thickness) { m_thickness = thickness; }
   /// Tests every pair of one batch (parallel); may be called any number of times a step.
   void test(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
             std::span<const VertexFacePair> vertex_face, std::span<const EdgeEdgePair> edge_edge);
@@ -58,13 +62,20 @@ class ExactPairTester {
     std::int64_t exact = 0;
   };
   tbb::enumerable_thread_specific<ThreadOutput> m_outputs;
+  double m_thickness = 0;
 };
 
-/// One batch through ExactPairTester: the colliding pairs, sorted and without duplicates.
-/// `exact_fallbacks` receives how many queries the exact path decided.
+/// The candidate pairs of one batch.
+struct CandidateBatch {
+  std::span<const VertexFacePair> vertex_face;  ///< vertex-face pairs
+  std::span<const EdgeEdgePair> edge_edge;      ///< edge-edge pairs
+};
+
+/// One batch through ExactPairTester (with `thickness`, ExactPairTester::set_thickness): the
+/// colliding pairs, sorted and without duplicates. `exact_fallbacks` receives how many
+/// queries the exact path decided.
 CollisionSet test_pairs_exactly(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
-                                std::span<const VertexFacePair> vertex_face,
-                                std::span<const EdgeEdgePair> edge_edge,
+                                CandidateBatch batch, double thickness = 0,
                                 std::int64_t* exact_fallbacks = nullptr);
 
 }  // namespace tailor

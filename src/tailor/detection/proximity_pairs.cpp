@@ -8,18 +8,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "tailor/bvh/aabb.hpp"
-#include "tailor/bvh/bvh.hpp"
-#include "tailor/bvh/feature_boxes.hpp"
+#include "tailor/detection/feature_box_pairs.hpp"
 #include "tailor/ccd/proximity_predicates.hpp"
 #include "tailor/geometry/error.hpp"
 
 namespace tailor {
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 void check_configuration(const TriangleMesh& mesh, const Positions& x, double thickness) {
   if (x.rows() != mesh.num_vertices()) {
@@ -33,17 +29,6 @@ void check_configuration(const TriangleMesh& mesh, const Positions& x, double th
   }
 }
 
-/// The box of point p grown by `grow` on every side, rounded outwards (two ulps: the
-/// rounded sum is within half an ulp of the exact one).
-Aabb grown_point_box(const Vec3& p, double grow) {
-  Aabb box;
-  for (int k = 0; k < 3; ++k) {
-    box.min[k] = std::nextafter(std::nextafter(p[k] - grow, -kInf), -kInf);
-    box.max[k] = std::nextafter(std::nextafter(p[k] + grow, kInf), kInf);
-  }
-  return box;
-}
-
 FourPoints vertex_face_points(const TriangleMesh& mesh, const Positions& x, Index v, Index f) {
   const auto face = mesh.faces().row(f);
   return {position(x, v), position(x, face[0]), position(x, face[1]), position(x, face[2])};
@@ -52,16 +37,6 @@ FourPoints vertex_face_points(const TriangleMesh& mesh, const Positions& x, Inde
 FourPoints edge_edge_points(const TriangleMesh& mesh, const Positions& x, Index e, Index g) {
   const auto a = mesh.edges().row(e), b = mesh.edges().row(g);
   return {position(x, a[0]), position(x, a[1]), position(x, b[0]), position(x, b[1])};
-}
-
-bool face_holds(const TriangleMesh& mesh, Index f, Index v) {
-  const auto face = mesh.faces().row(f);
-  return face[0] == v || face[1] == v || face[2] == v;
-}
-
-bool edges_share_an_end(const TriangleMesh& mesh, Index e, Index g) {
-  const auto a = mesh.edges().row(e), b = mesh.edges().row(g);
-  return a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1];
 }
 
 /// Keeps the candidates the exact predicate accepts (in parallel; order kept).
@@ -83,21 +58,11 @@ ProximityPairs proximity_pairs(const TriangleMesh& mesh, const Positions& x, dou
   check_configuration(mesh, x, thickness);
   std::vector<Aabb> vertices(static_cast<std::size_t>(mesh.num_vertices()));
   for (Index v = 0; v < mesh.num_vertices(); ++v) {
-    vertices[v] = grown_point_box(position(x, v), 0.5 * thickness);
+    Aabb point;
+    point.extend(position(x, v));
+    vertices[v] = grown_outwards(point, 0.5 * thickness);
   }
-  std::vector<Aabb> edges(static_cast<std::size_t>(mesh.num_edges()));
-  std::vector<Aabb> faces(static_cast<std::size_t>(mesh.num_faces()));
-  bound_edges_and_faces(mesh, vertices, edges, faces);
-  const Bvh vertex_tree(vertices), edge_tree(edges), face_tree(faces);
-
-  std::vector<VertexFacePair> vf;
-  vertex_tree.for_each_overlapping_pair(face_tree, [&](Index v, Index f) {
-    if (!face_holds(mesh, f, v)) vf.push_back({v, f});
-  });
-  std::vector<EdgeEdgePair> ee;
-  edge_tree.for_each_self_overlapping_pair([&](Index e, Index g) {
-    if (!edges_share_an_end(mesh, e, g)) ee.push_back({std::min(e, g), std::max(e, g)});
-  });
+  FeaturePairs candidates = overlapping_feature_pairs(mesh, vertices);
   const auto by_vertex = [](const VertexFacePair& a, const VertexFacePair& b) {
     return a.vertex != b.vertex ? a.vertex < b.vertex : a.face < b.face;
   };
@@ -105,10 +70,10 @@ ProximityPairs proximity_pairs(const TriangleMesh& mesh, const Positions& x, dou
     return a.edge_a != b.edge_a ? a.edge_a < b.edge_a : a.edge_b < b.edge_b;
   };
   ProximityPairs pairs;
-  pairs.vertex_face = keep_within(std::move(vf), [&](const VertexFacePair& p) {
+  pairs.vertex_face = keep_within(std::move(candidates.vertex_face), [&](const VertexFacePair& p) {
     return vertex_face_within(vertex_face_points(mesh, x, p.vertex, p.face), thickness);
   });
-  pairs.edge_edge = keep_within(std::move(ee), [&](const EdgeEdgePair& p) {
+  pairs.edge_edge = keep_within(std::move(candidates.edge_edge), [&](const EdgeEdgePair& p) {
     return edge_edge_within(edge_edge_points(mesh, x, p.edge_a, p.edge_b), thickness);
   });
   std::sort(pairs.vertex_face.begin(), pairs.vertex_face.end(), by_vertex);

@@ -12,11 +12,9 @@
 
 namespace tailor {
 
-/// The pairs of a mesh within a distance of each other at one instant.
-struct ProximityPairs {
-  std::vector<VertexFacePair> vertex_face;  ///< sorted by (vertex, face)
-  std::vector<EdgeEdgePair> edge_edge;      ///< sorted by (edge_a, edge_b), edge_a < edge_b
-};
+/// The pairs of a mesh within a distance of each other at one instant: vertex_face sorted
+/// by (vertex, face), edge_edge by (edge_a, edge_b), edge_a < edge_b.
+using ProximityPairs = FeaturePairs;
 
 /// Every vertex-face pair (a face not holding the vertex) and edge-edge pair (two edges
 /// without a common end) of `mesh` whose distance in configuration `x` is at most

@@ -4,6 +4,8 @@
 #include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 
+#include <cmath>
+
 #include <chrono>
 
 #include "tailor/bvh/mesh_bvh.hpp"
@@ -18,6 +20,8 @@
 #include "tailor/geometry/error.hpp"
 #include "tailor/geometry/finite_positions.hpp"
 #include "tailor/geometry/stopwatch.hpp"
+#include "tailor/detection/feature_box_pairs.hpp"
+#include "tailor/bvh/aabb.hpp"
 
 namespace tailor {
 namespace {
@@ -30,6 +34,15 @@ void check_positions(const TriangleMesh& mesh, const Positions& x, const char* n
   if (const std::optional<Index> vertex = first_non_finite_vertex(x)) {
     throw InputError(fmt::format("{} has a non-finite coordinate at vertex {}", name, *vertex));
   }
+}
+
+/// The config, if its thickness is one the detector can use.
+const DetectionConfig& checked(const DetectionConfig& config) {
+  if (!(config.thickness >= 0) || !std::isfinite(config.thickness)) {
+    throw InputError(
+        fmt::format("detection: the thickness must be finite and >= 0, got {}", config.thickness));
+  }
+  return config;
 }
 
 }  // namespace
@@ -59,12 +72,13 @@ struct SelfCollisionDetector::Impl {
   Impl(const TriangleMesh& mesh_, const Positions& x_build, DetectionConfig config_,
        std::vector<std::vector<Index>> section_loops)
       : mesh(mesh_),
-        config(config_),
+        config(checked(config_)),
         arena(config_.threads > 0 ? config_.threads : tbb::task_arena::automatic),
         traversal(mesh_) {
     use_radial_view = config.radial_view && !section_loops.empty();
     arena.execute([&] {
       check_positions(mesh, x_build, "the build frame");
+      if (config.thickness > 0) return;  // within_thickness() uses none of the structures
       if (use_radial_view) radial = RadialViewCulling(mesh, x_build, std::move(section_loops));
       // The isolated set needs only the topology: it is built beside the tree and its
       // contours (the contours' recursion is sequential).
@@ -162,6 +176,31 @@ struct SelfCollisionDetector::Impl {
     stats.ccd_exact_fallbacks = tester.exact_fallbacks();
   }
 
+  // Collisions with a thickness h > 0: swept vertex boxes grown by h / 2 (two primitives
+  // within h at some time have boxes within h on every axis), their overlapping pairs, and
+  // the minimum-separation CCD. The other stages are off: their arguments hold for
+  // touching only (docs/thickness.md).
+  CollisionSet within_thickness(const Positions& x0, const Positions& x1, DetectionStats& stats) {
+    const auto stage = SteadyClock::now();
+    std::vector<Aabb> boxes(static_cast<std::size_t>(mesh.num_vertices()));
+    for (Index v = 0; v < mesh.num_vertices(); ++v) {
+      boxes[static_cast<std::size_t>(v)] =
+          grown_outwards(swept_box(x0, x1, {v}), 0.5 * config.thickness);
+    }
+    const FeaturePairs pairs = overlapping_feature_pairs(mesh, boxes);
+    stats.traversal_ms = milliseconds_since(stage);
+    stats.vf_tested = static_cast<std::int64_t>(pairs.vertex_face.size());
+    stats.ee_tested = static_cast<std::int64_t>(pairs.edge_edge.size());
+    const auto ccd = SteadyClock::now();
+    tester.begin_step();
+    tester.set_thickness(config.thickness);
+    tester.test(mesh, x0, x1, pairs.vertex_face, pairs.edge_edge);
+    CollisionSet collisions = tester.take_collisions(mesh);
+    stats.ccd_ms = milliseconds_since(ccd);
+    record_counts(stats, collisions);
+    return collisions;
+  }
+
   DetectionResult detect(const Positions& x0, const Positions& x1) {
     DetectionResult result;
     DetectionStats& stats = result.stats;
@@ -170,6 +209,11 @@ struct SelfCollisionDetector::Impl {
       const auto start = SteadyClock::now();
       check_positions(mesh, x0, "x0");
       check_positions(mesh, x1, "x1");
+      if (config.thickness > 0) {
+        result.collisions = within_thickness(x0, x1, stats);
+        stats.total_ms = milliseconds_since(start);
+        return;
+      }
       refit_and_traverse(x0, x1, stats);
       auto stage = SteadyClock::now();
       radial_view_cull(x0, x1, stats);

@@ -1,0 +1,40 @@
+/// @file
+/// Three BVHs (vertices, edges, faces) and their overlapping pairs.
+
+#include "tailor/detection/feature_box_pairs.hpp"
+
+#include <algorithm>
+
+#include "tailor/bvh/bvh.hpp"
+#include "tailor/bvh/feature_boxes.hpp"
+
+namespace tailor {
+
+bool face_holds(const TriangleMesh& mesh, Index f, Index v) {
+  const auto face = mesh.faces().row(f);
+  return face[0] == v || face[1] == v || face[2] == v;
+}
+
+bool edges_share_an_end(const TriangleMesh& mesh, Index e, Index g) {
+  const auto a = mesh.edges().row(e), b = mesh.edges().row(g);
+  return a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1];
+}
+
+FeaturePairs overlapping_feature_pairs(const TriangleMesh& mesh,
+                                       const std::vector<Aabb>& vertex_boxes) {
+  std::vector<Aabb> edges(static_cast<std::size_t>(mesh.num_edges()));
+  std::vector<Aabb> faces(static_cast<std::size_t>(mesh.num_faces()));
+  bound_edges_and_faces(mesh, vertex_boxes, edges, faces);
+  const Bvh vertex_tree(vertex_boxes), edge_tree(edges), face_tree(faces);
+  FeaturePairs pairs;
+  vertex_tree.for_each_overlapping_pair(face_tree, [&](Index v, Index f) {
+    if (!face_holds(mesh, f, v)) pairs.vertex_face.push_back({v, f});
+  });
+  edge_tree.for_each_self_overlapping_pair([&](Index e, Index g) {
+    if (!edges_share_an_end(mesh, e, g))
+      pairs.edge_edge.push_back({std::min(e, g), std::max(e, g)});
+  });
+  return pairs;
+}
+
+}  // namespace tailor
