@@ -26,6 +26,7 @@
 #include "naive_ccd.hpp"
 #include "support/degenerate_ccd_queries.hpp"
 #include "tailor/ccd/ccd.hpp"
+#include "tailor/ccd/ccd_double.hpp"
 #include "tailor/ccd/ccd_exact.hpp"
 #include "tailor/ccd/ccd_rational.hpp"
 #include "tailor/ccd/query_io.hpp"

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "tailor/ccd/ccd.hpp"
+#include "tailor/ccd/ccd_double.hpp"
 #include "tailor/ccd/ccd_exact.hpp"
 #include "tailor/ccd/ccd_rational.hpp"
 

@@ -10,6 +10,7 @@
 
 #include "ccd_test_support.hpp"
 #include "tailor/ccd/ccd.hpp"
+#include "tailor/ccd/ccd_double.hpp"
 #include "tailor/ccd/ccd_exact.hpp"
 
 namespace tailor {

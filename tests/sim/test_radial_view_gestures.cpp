@@ -22,7 +22,7 @@ using tailor::testing::sanitized;
 
 /// A small, fast version of the default scene (the gesture played twice as fast), one
 /// substep per frame so that every substep can be checked.
-SceneConfig small_scene(const std::string& gesture) {
+SceneConfig one_substep_scene(const std::string& gesture) {
   SceneConfig c = testing::small_fast_scene(gesture);
   c.time_step = c.time_step / c.substeps;
   c.substeps = 1;
@@ -33,7 +33,7 @@ SceneConfig small_scene(const std::string& gesture) {
 // motion stretched 4x (the cloth then passes through itself at the folds, so there are
 // collisions to lose).
 void check_gesture(const std::string& gesture) {
-  const SceneConfig scene = small_scene(gesture);
+  const SceneConfig scene = one_substep_scene(gesture);
   Simulation simulation(scene);
   const TriangleMesh& mesh = simulation.cloth_mesh();
   const Positions& rest = simulation.scene().sleeve().rest;

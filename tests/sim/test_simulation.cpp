@@ -27,7 +27,7 @@ using tailor::testing::sanitized;
 
 /// A small, fast version of the default scene: the gesture played twice as fast, with
 /// twice the substeps, so the arm moves as far per substep as in the default scene.
-SceneConfig small_scene(const std::string& gesture) {
+SceneConfig doubled_substep_scene(const std::string& gesture) {
   SceneConfig c = testing::small_fast_scene(gesture);
   c.substeps = 2 * SceneConfig{}.substeps;
   return c;
@@ -84,7 +84,7 @@ void expect_sane(const RunResult& r, const SceneConfig& config) {
 }
 
 TEST(Simulation, ElbowGestureMakesTheSleeveCollideWithItself) {
-  const SceneConfig c = small_scene("elbow");
+  const SceneConfig c = doubled_substep_scene("elbow");
   // Peak flexion at 0.1 + 1.0 / 2 s = frame 18.
   const RunResult r = run(c, sanitized() ? 18 : 24);
   expect_sane(r, c);
@@ -92,19 +92,19 @@ TEST(Simulation, ElbowGestureMakesTheSleeveCollideWithItself) {
 }
 
 TEST(Simulation, RaiseGesture) {
-  const SceneConfig c = small_scene("raise");
+  const SceneConfig c = doubled_substep_scene("raise");
   const RunResult r = run(c, sanitized() ? 8 : 20);
   expect_sane(r, c);
 }
 
 TEST(Simulation, TwistGesture) {
-  const SceneConfig c = small_scene("twist");
+  const SceneConfig c = doubled_substep_scene("twist");
   const RunResult r = run(c, sanitized() ? 8 : 20);
   expect_sane(r, c);
 }
 
 TEST(Simulation, PinnedRingFollowsTheArm) {
-  SceneConfig c = small_scene("raise");
+  SceneConfig c = doubled_substep_scene("raise");
   SimulationOptions options;
   options.contact = false;
   Simulation sim(c, options);
@@ -125,7 +125,7 @@ TEST(Simulation, PinnedRingFollowsTheArm) {
 }
 
 TEST(Simulation, SummaryHasTheRequiredFields) {
-  Simulation sim(small_scene("elbow"));
+  Simulation sim(doubled_substep_scene("elbow"));
   sim.step_frame();
   const nlohmann::json s = simulation_summary(sim, false);
   for (const char* key :

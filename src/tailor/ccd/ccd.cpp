@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 
+#include "tailor/ccd/ccd_double.hpp"
 #include "tailor/ccd/ccd_exact.hpp"
 
 namespace tailor {

@@ -11,6 +11,8 @@
 /// conditions certainly fail over the whole node. Anything else goes to the exact tier:
 /// the tier never guesses, it only answers what its bounds prove.
 
+#include "tailor/ccd/ccd_double.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -4,6 +4,7 @@
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 #include "tailor/ccd/thickness_ccd.hpp"
@@ -11,6 +12,20 @@
 
 namespace tailor {
 namespace {
+
+// The CCD of either pair kind, by overload.
+CcdResult touching_ccd(const VertexFaceQuery& q) {
+  return vertex_face_ccd(q);
+}
+CcdResult touching_ccd(const EdgeEdgeQuery& q) {
+  return edge_edge_ccd(q);
+}
+ThicknessResult within_ccd(const VertexFaceQuery& q, double h) {
+  return vertex_face_ccd_within(q, h);
+}
+ThicknessResult within_ccd(const EdgeEdgeQuery& q, double h) {
+  return edge_edge_ccd_within(q, h);
+}
 
 EdgeEdgeCollision make_edge_edge(const EdgeArray& edges, Index e1, Index e2, double toi) {
   // Edges are stored (a, b) with a < b; order the two edges by their vertex ids.
@@ -81,14 +96,9 @@ void ExactPairTester::test(const TriangleMesh& mesh, const Positions& x0, const 
         const Index a = faces(f, 0), b = faces(f, 1), c = faces(f, 2);
         const VertexFaceQuery query{x0.row(v), x0.row(a), x0.row(b), x0.row(c),
                                     x1.row(v), x1.row(a), x1.row(b), x1.row(c)};
-        if (m_thickness > 0) {
-          const ThicknessResult result = vertex_face_ccd_within(query, m_thickness);
-          if (result.hit) out.vertex_face.push_back({v, f, result.toi});
-          continue;
+        if (const auto toi = time_of_impact(query, out.exact)) {
+          out.vertex_face.push_back({v, f, *toi});
         }
-        const CcdResult result = vertex_face_ccd(query);
-        out.exact += result.path == CcdPath::exact || result.path == CcdPath::gmp;
-        if (result.hit) out.vertex_face.push_back({v, f, result.toi});
       }
     } else {
       const std::span<const EdgeEdgePair> pairs = edge_edge_blocks[chunk.block];
@@ -98,17 +108,23 @@ void ExactPairTester::test(const TriangleMesh& mesh, const Positions& x0, const 
         const Index c = edges(e2, 0), d = edges(e2, 1);
         const EdgeEdgeQuery query{x0.row(a), x0.row(b), x0.row(c), x0.row(d),
                                   x1.row(a), x1.row(b), x1.row(c), x1.row(d)};
-        if (m_thickness > 0) {
-          const ThicknessResult result = edge_edge_ccd_within(query, m_thickness);
-          if (result.hit) out.edge_edge.push_back({e1, e2, result.toi});
-          continue;
-        }
-        const CcdResult result = edge_edge_ccd(query);
-        out.exact += result.path == CcdPath::exact || result.path == CcdPath::gmp;
-        if (result.hit) out.edge_edge.push_back({e1, e2, result.toi});
+        if (const auto toi = time_of_impact(query, out.exact))
+          out.edge_edge.push_back({e1, e2, *toi});
       }
     }
   });
+}
+
+template <class Query>
+std::optional<double> ExactPairTester::time_of_impact(const Query& query,
+                                                      std::int64_t& exact) const {
+  if (m_thickness > 0) {
+    const ThicknessResult result = within_ccd(query, m_thickness);
+    return result.hit ? std::optional<double>(result.toi) : std::nullopt;
+  }
+  const CcdResult result = touching_ccd(query);
+  exact += result.path == CcdPath::exact || result.path == CcdPath::gmp;
+  return result.hit ? std::optional<double>(result.toi) : std::nullopt;
 }
 
 CollisionSet ExactPairTester::take_collisions(const TriangleMesh& mesh) {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <span>
 
 #include "tailor/candidates/primitive_pair.hpp"
@@ -61,6 +62,11 @@ class ExactPairTester {
     std::deque<EdgeEdgeHit> edge_edge;
     std::int64_t exact = 0;
   };
+  // The pair's time of impact (touching, or coming within m_thickness), if it has one;
+  // counts a query the exact path decided in `exact`.
+  template <class Query>
+  std::optional<double> time_of_impact(const Query& query, std::int64_t& exact) const;
+
   tbb::enumerable_thread_specific<ThreadOutput> m_outputs;
   double m_thickness = 0;
 };

@@ -14,6 +14,7 @@
 #include "tailor/geometry/error.hpp"
 #include "tailor/geometry/stopwatch.hpp"
 #include "tailor/sim/arm_collision.hpp"
+#include "tailor/sim/pinned_vertices.hpp"
 #include "tailor/sim/strain_limiter.hpp"
 
 namespace tailor {
@@ -114,9 +115,7 @@ struct Simulation::Impl {
   SimulationOptions options;
   ClothModel cloth;
   std::unique_ptr<ContactSolver> contact;
-  std::vector<Index> pinned;
-  Positions pinned_rest;
-  std::vector<char> fixed;
+  PinnedVertices pinned;              // the shoulder ring, in every form the parts read
   std::vector<char> released;         // arm contacts let go (their spring pulled last step)
   std::vector<double> normal_forces;  // arm contact normal force of the last step (N)
   StrainLimiter limiter;
@@ -140,46 +139,34 @@ struct Simulation::Impl {
           const Positions warp = scene.sleeve().warp_directions();
           return ClothModel(*scene.sleeve().mesh, scene.sleeve().rest, config.material, &warp);
         }()),
-        limiter([&] {
-          Eigen::VectorXd masses = cloth.masses();
-          for (Index p : scene.sleeve().pinned_vertices())
-            masses[p] = std::numeric_limits<double>::infinity();
-          return StrainLimiter(*scene.sleeve().mesh, scene.sleeve().rest, masses,
-                               config.material.strain_limit);
-        }()) {
+        pinned(scene.sleeve().pinned_vertices(), scene.sleeve().rest),
+        limiter(*scene.sleeve().mesh, scene.sleeve().rest,
+                pinned.with_infinite_masses(cloth.masses()), config.material.strain_limit) {
     const Sleeve& sleeve = scene.sleeve();
     arm_margin = arm_margin_for(config, sleeve);
-    pinned = sleeve.pinned_vertices();
-    cloth.set_pinned(pinned);
+    cloth.set_pinned(pinned.ids());
     cloth.set_solver(options.solver, options.cg_tolerance);
-    pinned_rest.resize(static_cast<Eigen::Index>(pinned.size()), 3);
-    fixed.assign(static_cast<std::size_t>(sleeve.mesh->num_vertices()), 0);
-    for (std::size_t i = 0; i < pinned.size(); ++i) {
-      pinned_rest.row(static_cast<Eigen::Index>(i)) = sleeve.rest.row(pinned[i]);
-      fixed[static_cast<std::size_t>(pinned[i])] = 1;
-    }
-    released.assign(fixed.size(), 0);
-    normal_forces.assign(fixed.size(), 0.0);
+    released.assign(pinned.flags().size(), 0);
+    normal_forces.assign(pinned.flags().size(), 0.0);
     x = sleeve.rest;
     v = Positions::Zero(x.rows(), 3);
     const ArmPose pose0 = scene.gesture().pose_at(0.0);
     skeleton = scene.arm().skeleton(pose0);
     y = scene.arm().skin(pose0);
     // The pose at t = 0 may differ from the rest pose the sleeve was built in.
-    if (pinned.size() > 0) {
-      const Positions targets = scene.arm().skin_points(pinned_rest, pose0);
-      for (std::size_t i = 0; i < pinned.size(); ++i)
-        x.row(pinned[i]) = targets.row(static_cast<Eigen::Index>(i));
+    if (!pinned.ids().empty()) {
+      const Positions targets = scene.arm().skin_points(pinned.rest(), pose0);
+      for (std::size_t i = 0; i < pinned.ids().size(); ++i)
+        x.row(pinned.ids()[i]) = targets.row(static_cast<Eigen::Index>(i));
     }
     if (options.record_contacts) options.detection.keep_candidate_pairs = true;
     if (options.detection.radial_view) {
       clusters = std::make_unique<RadialViewClusters>(*sleeve.mesh, x, scene.observer_loops());
     }
     if (options.contact) {
-      Eigen::VectorXd masses = cloth.masses();
-      for (Index p : pinned) masses[p] = std::numeric_limits<double>::infinity();
-      contact = std::make_unique<ContactSolver>(*sleeve.mesh, x, masses, options.detection,
-                                                config.contact, scene.observer_loops());
+      contact = std::make_unique<ContactSolver>(
+          *sleeve.mesh, x, pinned.with_infinite_masses(cloth.masses()), options.detection,
+          config.contact, scene.observer_loops());
     }
   }
 
@@ -198,7 +185,7 @@ struct Simulation::Impl {
     const ArmPose pose1 = scene.gesture().pose_at(t1);
     const ArmSkeleton skeleton1 = arm.skeleton(pose1);
     Positions y1 = arm.skin(pose1);
-    const Positions targets = arm.skin_points(pinned_rest, pose1);
+    const Positions targets = arm.skin_points(pinned.rest(), pose1);
 
     // Cloth on the arm: contact springs and friction in the solve, then strain limiting
     // and a safety projection out of the implicit arm, alternately.
@@ -207,8 +194,9 @@ struct Simulation::Impl {
         options.arm_friction >= 0 ? options.arm_friction : config.contact.friction;
     const ArmContactSettings arm_settings{margin, 0.5 * margin, kArmContactStiffness, arm_friction};
     const ArmMotion arm_motion{arm, skeleton, skeleton1};
-    const std::vector<ContactPlane> planes = arm_contact_planes(
-        arm_motion, {x, v, cloth.masses()}, h, arm_settings, {normal_forces, fixed, released});
+    const std::vector<ContactPlane> planes =
+        arm_contact_planes(arm_motion, {x, v, cloth.masses()}, h, arm_settings,
+                           {normal_forces, pinned.flags(), released});
     Positions x1, v1;
     record.cloth = cloth.step(x, v, {h, config.gravity, &targets, planes}, x1, v1);
     record.arm_contacts = finish_arm_contacts(planes, x1, released, normal_forces);
@@ -220,7 +208,7 @@ struct Simulation::Impl {
       const ArmCollisionStats arm_stats = project_out_of_arm(arm_motion, x, x_end,
                                                              {.margin = margin,
                                                               .friction = 0.0,
-                                                              .fixed = &fixed,
+                                                              .fixed = &pinned.flags(),
                                                               .projected_ids = &projected_ids,
                                                               .cache = &arm_cache});
       for (Index i : projected_ids) released[static_cast<std::size_t>(i)] = 0;
