@@ -37,7 +37,8 @@ TEST(ProximityPairs, CrumpledClothMatchesBruteForceAtEveryThickness) {
     const double h = share * diagonal.norm();
     const ProximityPairs fast = proximity_pairs(mesh, step.x1, h);
     expect_same_pairs(fast, proximity_pairs_brute_force(mesh, step.x1, h));
-    if (share >= 1e-2) {  // the test means something: pairs were found
+    if (share >= 5e-2) {  // the test means something: pairs were found (also on the
+                          // sanitizers' smaller cloth)
       EXPECT_GT(fast.vertex_face.size(), 0u) << share;
       EXPECT_GT(fast.edge_edge.size(), 0u) << share;
     }
