@@ -75,8 +75,8 @@ PairVerdict verdict(bool f_ok, const Cubic& f, bool undecided, PairFilters filte
 
 PairVerdict vertex_face_verdict(const FourPoints& at_t0, const FourPoints& at_t1,
                                 PairFilters filters) {
-  const auto& [p_t0, a_t0, b_t0, c_t0] = at_t0;
-  const auto& [p_t1, a_t1, b_t1, c_t1] = at_t1;
+  const Vec3 &p_t0 = at_t0[0], &a_t0 = at_t0[1], &b_t0 = at_t0[2], &c_t0 = at_t0[3];
+  const Vec3 &p_t1 = at_t1[0], &a_t1 = at_t1[1], &b_t1 = at_t1[2], &c_t1 = at_t1[3];
   Cubic f;
   bool undecided = true;
   const bool f_ok =
@@ -91,8 +91,8 @@ PairVerdict vertex_face_verdict(const FourPoints& at_t0, const FourPoints& at_t1
 
 PairVerdict edge_edge_verdict(const FourPoints& at_t0, const FourPoints& at_t1,
                               PairFilters filters) {
-  const auto& [a_t0, b_t0, c_t0, d_t0] = at_t0;
-  const auto& [a_t1, b_t1, c_t1, d_t1] = at_t1;
+  const Vec3 &a_t0 = at_t0[0], &b_t0 = at_t0[1], &c_t0 = at_t0[2], &d_t0 = at_t0[3];
+  const Vec3 &a_t1 = at_t1[0], &b_t1 = at_t1[1], &c_t1 = at_t1[2], &d_t1 = at_t1[3];
   Cubic f;
   bool undecided = true;
   const bool f_ok = coplanarity_cubic(at_t0, at_t1, f, undecided);

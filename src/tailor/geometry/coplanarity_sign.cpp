@@ -67,8 +67,8 @@ int sign_rational(int index, const std::array<const Vec3*, 8>& x) {
 
 int coplanarity_coefficient_sign_exact(int index, const FourPoints& at_t0,
                                        const FourPoints& at_t1) {
-  const auto& [a_t0, b_t0, c_t0, d_t0] = at_t0;
-  const auto& [a_t1, b_t1, c_t1, d_t1] = at_t1;
+  const Vec3 &a_t0 = at_t0[0], &b_t0 = at_t0[1], &c_t0 = at_t0[2], &d_t0 = at_t0[3];
+  const Vec3 &a_t1 = at_t1[0], &b_t1 = at_t1[1], &c_t1 = at_t1[2], &d_t1 = at_t1[3];
   const std::array<const Vec3*, 8> x{&a_t0, &b_t0, &c_t0, &d_t0, &a_t1, &b_t1, &c_t1, &d_t1};
   for (const Vec3* p : x) {
     if (!p->allFinite()) throw std::invalid_argument("coplanarity_sign: non-finite coordinate");

@@ -45,8 +45,8 @@ int coplanarity_coefficient_sign_exact(int index, const FourPoints& at_t0, const
 /// finite; then the bound does not hold and the caller must use exact arithmetic.
 inline bool coplanarity_bernstein_double(const FourPoints& at_t0, const FourPoints& at_t1,
                                          double value[4], double bound[4]) {
-  const auto& [a_t0, b_t0, c_t0, d_t0] = at_t0;
-  const auto& [a_t1, b_t1, c_t1, d_t1] = at_t1;
+  const Vec3 &a_t0 = at_t0[0], &b_t0 = at_t0[1], &c_t0 = at_t0[2], &d_t0 = at_t0[3];
+  const Vec3 &a_t1 = at_t1[0], &b_t1 = at_t1[1], &c_t1 = at_t1[2], &d_t1 = at_t1[3];
   // The 18 differences; one rounding each.
   double u0[3], v0[3], w0[3], u1[3], v1[3], w1[3];
   for (int k = 0; k < 3; ++k) {
