@@ -3,7 +3,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -12,6 +11,7 @@
 #include "tailor/ccd/query_writer.hpp"
 #include "tailor/detection/brute_force.hpp"
 #include "tailor/detection/ccd_query_export.hpp"
+#include "tailor/detection/collision_free_step.hpp"
 #include "tailor/detection/self_collision_detector.hpp"
 #include "tailor/geometry/error.hpp"
 #include "tailor/geometry/stopwatch.hpp"
@@ -111,8 +111,8 @@ int run_detect(const DetectArgs& args) {
     DetectionResult result = detector.detect(t0.vertices, t1.vertices);
     fmt::print("method     : {}\n", args.detection.method);
     // What a process pays before the step (a simulator builds the detector once).
-    fmt::print("setup (ms) : read {:.3f}, mesh {:.3f}, detector build {:.3f}\n", read_ms,
-               mesh_ms, build_ms);
+    fmt::print("setup (ms) : read {:.3f}, mesh {:.3f}, detector build {:.3f}\n", read_ms, mesh_ms,
+               build_ms);
     print_stats(result.stats);
     if (!args.dump_prefix.empty()) {
       dump_queries(args.dump_prefix, mesh, t0.vertices, t1.vertices, config,
@@ -124,10 +124,8 @@ int run_detect(const DetectArgs& args) {
   }
   fmt::print("collisions : {} vertex-face, {} edge-edge\n", collisions.vertex_face.size(),
              collisions.edge_edge.size());
-  double first = 1.0;  // the collision-free fraction of the step (collision_free_step)
-  for (const auto& c : collisions.vertex_face) first = std::min(first, c.toi);
-  for (const auto& c : collisions.edge_edge) first = std::min(first, c.toi);
-  if (collisions.size() > 0) fmt::print("first toi  : {:.9g}\n", first);
+  // The collision-free fraction of the step (collision_free_step).
+  if (collisions.size() > 0) fmt::print("first toi  : {:.9g}\n", first_contact(collisions).alpha);
   if (!args.json_path.empty()) {
     out["collisions"] = collisions_json(collisions);
     std::ofstream file(args.json_path);

@@ -12,7 +12,10 @@ CollisionFreeStep collision_free_step(const TriangleMesh& mesh, const Positions&
                                       DetectionConfig config) {
   config.thickness = thickness;
   SelfCollisionDetector detector(mesh, x0, config);
-  const CollisionSet collisions = detector.detect(x0, x1).collisions;
+  return first_contact(detector.detect(x0, x1).collisions);
+}
+
+CollisionFreeStep first_contact(const CollisionSet& collisions) {
   CollisionFreeStep step;
   for (const VertexFaceCollision& c : collisions.vertex_face) {
     if (c.toi < step.alpha || (!step.vertex_face && !step.edge_edge && c.toi == step.alpha)) {

@@ -24,6 +24,10 @@ struct CollisionFreeStep {
   std::optional<EdgeEdgeCollision> edge_edge;
 };
 
+/// The earliest time of impact among `collisions` and the pair that has it (a vertex-face
+/// pair before an edge-edge pair at the same time); α = 1 and no pair when there are none.
+CollisionFreeStep first_contact(const CollisionSet& collisions);
+
 /// The largest fraction of the linear step from `x0` to `x1` that keeps every vertex-face
 /// and edge-edge pair of `mesh` (sharing no vertex) more than `thickness` apart, and the
 /// pair that limits it: the earliest time of impact of detect_self_collisions with

@@ -13,6 +13,7 @@
 #include "tailor/detection/feature_box_pairs.hpp"
 #include "tailor/ccd/proximity_predicates.hpp"
 #include "tailor/geometry/error.hpp"
+#include "tailor/geometry/finite_positions.hpp"
 
 namespace tailor {
 namespace {
@@ -22,7 +23,9 @@ void check_configuration(const TriangleMesh& mesh, const Positions& x, double th
     throw InputError(
         fmt::format("proximity: {} positions for {} vertices", x.rows(), mesh.num_vertices()));
   }
-  if (!x.allFinite()) throw InputError("proximity: a position is not finite");
+  if (const std::optional<Index> vertex = first_non_finite_vertex(x)) {
+    throw InputError(fmt::format("proximity: a non-finite coordinate at vertex {}", *vertex));
+  }
   if (!(thickness >= 0) || !std::isfinite(thickness)) {
     throw InputError(
         fmt::format("proximity: the thickness must be finite and >= 0, got {}", thickness));

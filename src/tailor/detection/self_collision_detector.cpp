@@ -4,10 +4,10 @@
 #include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 
+#include <chrono>
 #include <cmath>
 
-#include <chrono>
-
+#include "tailor/bvh/aabb.hpp"
 #include "tailor/bvh/mesh_bvh.hpp"
 #include "tailor/candidates/isolated_set.hpp"
 #include "tailor/candidates/primitive_pair_generator.hpp"
@@ -15,13 +15,12 @@
 #include "tailor/culling/node_contours.hpp"
 #include "tailor/culling/radial_view_culling.hpp"
 #include "tailor/detection/exact_pair_tests.hpp"
+#include "tailor/detection/feature_box_pairs.hpp"
 #include "tailor/detection/stage_counts.hpp"
 #include "tailor/detection/stage_options.hpp"
 #include "tailor/geometry/error.hpp"
 #include "tailor/geometry/finite_positions.hpp"
 #include "tailor/geometry/stopwatch.hpp"
-#include "tailor/detection/feature_box_pairs.hpp"
-#include "tailor/bvh/aabb.hpp"
 
 namespace tailor {
 namespace {
@@ -78,6 +77,7 @@ struct SelfCollisionDetector::Impl {
     use_radial_view = config.radial_view && !section_loops.empty();
     arena.execute([&] {
       check_positions(mesh, x_build, "the build frame");
+      tester.set_thickness(config.thickness);
       if (config.thickness > 0) return;  // within_thickness() uses none of the structures
       if (use_radial_view) radial = RadialViewCulling(mesh, x_build, std::move(section_loops));
       // The isolated set needs only the topology: it is built beside the tree and its
@@ -193,7 +193,6 @@ struct SelfCollisionDetector::Impl {
     stats.ee_tested = static_cast<std::int64_t>(pairs.edge_edge.size());
     const auto ccd = SteadyClock::now();
     tester.begin_step();
-    tester.set_thickness(config.thickness);
     tester.test(mesh, x0, x1, pairs.vertex_face, pairs.edge_edge);
     CollisionSet collisions = tester.take_collisions(mesh);
     stats.ccd_ms = milliseconds_since(ccd);
