@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "idle_blas_threads.hpp"
 #include "tailor/geometry/error.hpp"
 #include "tailor/io/memory_budget.hpp"
 
@@ -26,6 +27,7 @@ CommandRegistration::CommandRegistration(std::string name, CommandSetup setup) {
 
 int main(int argc, char** argv) {
   using namespace tailor::cli;
+  stop_idle_blas_threads();
   CLI::App app{"tailor: exact continuous self-collision detection for cloth"};
   app.require_subcommand(1);
   bool verbose = false;
