@@ -66,6 +66,18 @@ class Bvh {
   template <class Visit>
   void for_each_self_overlapping_pair(Visit&& visit) const;
 
+  /// The pairs of for_each_overlapping_pair, with large subtree pairs walked in parallel:
+  /// `visit` is called from several threads at once, in no fixed order.
+  template <class Visit>
+  void parallel_for_each_overlapping_pair(const Bvh& other, Visit&& visit) const {
+    if (!empty() && !other.empty()) parallel_pair(0, other, 0, visit);
+  }
+  /// The pairs of for_each_self_overlapping_pair, walked in parallel as above.
+  template <class Visit>
+  void parallel_for_each_self_overlapping_pair(Visit&& visit) const {
+    if (!empty()) parallel_self(0, visit);
+  }
+
  private:
   // Subtrees with fewer primitives than this are handled by one task.
   static constexpr Index kParallelGrain = 2048;
@@ -87,6 +99,10 @@ class Bvh {
   void pair_recursive(Index a, const Bvh& other, Index b, Visit& visit) const;
   template <class Visit>
   void self_recursive(Index a, Visit& visit) const;
+  template <class Visit>
+  void parallel_pair(Index a, const Bvh& other, Index b, Visit& visit) const;
+  template <class Visit>
+  void parallel_self(Index a, Visit& visit) const;
 
   std::vector<Index> m_left, m_right, m_parent;  // leaf: left = -1, right = primitive
   std::vector<Index> m_first, m_count;           // range in m_primitive_order
@@ -126,6 +142,29 @@ void Bvh::self_recursive(Index a, Visit& visit) const {
   self_recursive(m_left[a], visit);
   self_recursive(m_right[a], visit);
   pair_recursive(m_left[a], *this, m_right[a], visit);
+}
+
+// The walk of pair_recursive, splitting the same node, with both halves as tasks while the
+// pair holds more than kParallelGrain primitives.
+template <class Visit>
+void Bvh::parallel_pair(Index a, const Bvh& other, Index b, Visit& visit) const {
+  if (m_count[a] + other.m_count[b] <= kParallelGrain) return pair_recursive(a, other, b, visit);
+  if (!m_boxes[a].overlaps(other.m_boxes[b])) return;
+  if (other.is_leaf(b) || (!is_leaf(a) && m_count[a] >= other.m_count[b])) {
+    tbb::parallel_invoke([&] { parallel_pair(m_left[a], other, b, visit); },
+                         [&] { parallel_pair(m_right[a], other, b, visit); });
+  } else {
+    tbb::parallel_invoke([&] { parallel_pair(a, other, other.m_left[b], visit); },
+                         [&] { parallel_pair(a, other, other.m_right[b], visit); });
+  }
+}
+
+template <class Visit>
+void Bvh::parallel_self(Index a, Visit& visit) const {
+  if (m_count[a] <= kParallelGrain) return self_recursive(a, visit);
+  tbb::parallel_invoke([&] { parallel_self(m_left[a], visit); },
+                       [&] { parallel_self(m_right[a], visit); },
+                       [&] { parallel_pair(m_left[a], *this, m_right[a], visit); });
 }
 
 }  // namespace tailor

@@ -3,6 +3,9 @@
 
 #include "tailor/detection/feature_box_pairs.hpp"
 
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 
 #include "tailor/bvh/bvh.hpp"
@@ -25,15 +28,24 @@ FeaturePairs overlapping_feature_pairs(const TriangleMesh& mesh,
   std::vector<Aabb> edges(static_cast<std::size_t>(mesh.num_edges()));
   std::vector<Aabb> faces(static_cast<std::size_t>(mesh.num_faces()));
   bound_edges_and_faces(mesh, vertex_boxes, edges, faces);
-  const Bvh vertex_tree(vertex_boxes), edge_tree(edges), face_tree(faces);
-  FeaturePairs pairs;
-  vertex_tree.for_each_overlapping_pair(face_tree, [&](Index v, Index f) {
-    if (!face_holds(mesh, f, v)) pairs.vertex_face.push_back({v, f});
+  Bvh vertex_tree, edge_tree, face_tree;
+  tbb::parallel_invoke([&] { vertex_tree = Bvh(vertex_boxes); }, [&] { edge_tree = Bvh(edges); },
+                       [&] { face_tree = Bvh(faces); });
+  // Each thread collects its pairs; the lists are joined at the end.
+  tbb::enumerable_thread_specific<FeaturePairs> found;
+  vertex_tree.parallel_for_each_overlapping_pair(face_tree, [&](Index v, Index f) {
+    if (!face_holds(mesh, f, v)) found.local().vertex_face.push_back({v, f});
   });
-  edge_tree.for_each_self_overlapping_pair([&](Index e, Index g) {
+  edge_tree.parallel_for_each_self_overlapping_pair([&](Index e, Index g) {
     if (!edges_share_an_end(mesh, e, g))
-      pairs.edge_edge.push_back({std::min(e, g), std::max(e, g)});
+      found.local().edge_edge.push_back({std::min(e, g), std::max(e, g)});
   });
+  FeaturePairs pairs;
+  for (const FeaturePairs& part : found) {
+    pairs.vertex_face.insert(pairs.vertex_face.end(), part.vertex_face.begin(),
+                             part.vertex_face.end());
+    pairs.edge_edge.insert(pairs.edge_edge.end(), part.edge_edge.begin(), part.edge_edge.end());
+  }
   return pairs;
 }
 
