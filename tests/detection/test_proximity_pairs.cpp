@@ -45,6 +45,27 @@ TEST(ProximityPairs, CrumpledClothMatchesBruteForceAtEveryThickness) {
   }
 }
 
+TEST(ProximityPairs, OneSearchReusedAlongAStepMatchesBruteForceAtEveryCall) {
+  // The search's trees are built on the first configuration and refitted on the later
+  // ones, the last of which is moved far from it (mirrored and squashed: pairs appear whose
+  // boxes were apart in the first configuration).
+  const ProceduralStep step = make_crumpling_cloth_step(testing::sanitized() ? 200 : 800);
+  const TriangleMesh mesh(static_cast<Index>(step.x1.rows()), step.faces);
+  const Vec3 diagonal = step.x1.colwise().maxCoeff() - step.x1.colwise().minCoeff();
+  const double h = 5e-2 * diagonal.norm();
+  ProximitySearch search(mesh);
+  std::size_t found = 0;
+  for (const double t : {0.0, 0.5, 1.0, -1.0}) {
+    Positions x = (1 - t) * step.x0 + t * step.x1;
+    if (t < 0)
+      x = (step.x1.array().rowwise() * Eigen::Array3d(-1.0, 0.2, 1.0).transpose()).matrix();
+    const ProximityPairs pairs = search.pairs(x, h);
+    expect_same_pairs(pairs, proximity_pairs_brute_force(mesh, x, h));
+    found += pairs.vertex_face.size() + pairs.edge_edge.size();
+  }
+  EXPECT_GT(found, 0u);
+}
+
 TEST(ProximityPairs, SheetsOneThicknessApartAreFoundDespiteDisjointBoxes) {
   // Two flat 6 × 6 grids, the second 0.125 above the first: every vertex of one is exactly
   // the thickness from the other sheet (ungrown boxes are disjoint).

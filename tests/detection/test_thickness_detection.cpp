@@ -1,8 +1,8 @@
 /// @file
 /// Collisions with a thickness through the detector: every preset equals brute force (the
 /// same minimum-separation CCD behind box pruning of its own) as sets with equal times, on
-/// random steps and on the cloth-funnel step at h = 1e-3 of its diagonal; more pairs as h
-/// grows; and the collision-free step.
+/// random steps (and the step after each, through the same detector) and on the cloth-funnel step
+/// at h = 1e-3 of its diagonal; more pairs as h grows; and the collision-free step.
 
 #include <gtest/gtest.h>
 
@@ -49,13 +49,19 @@ TEST(ThicknessDetection, EveryPresetEqualsBruteForceOnRandomSteps) {
     for (const double share : {1e-3, 1e-2}) {
       const double h = share * size;
       const CollisionSet truth = brute_force_self_collisions(mesh, step.mesh.vertices, step.x1, h);
-      pairs += static_cast<int>(truth.size());
+      // A second step with the same detector (its trees refitted): the motion continued.
+      const Positions x2 = 2 * step.x1 - step.mesh.vertices;
+      const CollisionSet next_truth = brute_force_self_collisions(mesh, step.x1, x2, h);
+      pairs += static_cast<int>(truth.size() + next_truth.size());
       for (const std::string& preset : DetectionConfig::preset_names()) {
         DetectionConfig config = DetectionConfig::preset(preset);
         config.thickness = h;
         SelfCollisionDetector detector(mesh, step.mesh.vertices, config);
+        const std::string what = step.name + " " + preset + " h=" + std::to_string(h);
         expect_same_with_times(truth, detector.detect(step.mesh.vertices, step.x1).collisions,
-                               step.name + " " + preset + " h=" + std::to_string(h));
+                               what);
+        expect_same_with_times(next_truth, detector.detect(step.x1, x2).collisions,
+                               what + ", second step");
       }
     }
   }

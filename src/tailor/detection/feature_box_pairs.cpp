@@ -8,7 +8,6 @@
 
 #include <algorithm>
 
-#include "tailor/bvh/bvh.hpp"
 #include "tailor/bvh/feature_boxes.hpp"
 
 namespace tailor {
@@ -23,20 +22,29 @@ bool edges_share_an_end(const TriangleMesh& mesh, Index e, Index g) {
   return a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1];
 }
 
-FeaturePairs overlapping_feature_pairs(const TriangleMesh& mesh,
-                                       const std::vector<Aabb>& vertex_boxes) {
+void FeatureBoxTrees::update(const TriangleMesh& mesh, const std::vector<Aabb>& vertex_boxes) {
   std::vector<Aabb> edges(static_cast<std::size_t>(mesh.num_edges()));
   std::vector<Aabb> faces(static_cast<std::size_t>(mesh.num_faces()));
   bound_edges_and_faces(mesh, vertex_boxes, edges, faces);
-  Bvh vertex_tree, edge_tree, face_tree;
-  tbb::parallel_invoke([&] { vertex_tree = Bvh(vertex_boxes); }, [&] { edge_tree = Bvh(edges); },
-                       [&] { face_tree = Bvh(faces); });
+  // A tree is built once (the number of primitives tells), refitted afterwards.
+  const auto set = [](Bvh& tree, const std::vector<Aabb>& boxes) {
+    if (tree.num_primitives() == static_cast<Index>(boxes.size()) && !boxes.empty()) {
+      tree.refit(boxes);
+    } else {
+      tree = Bvh(boxes);
+    }
+  };
+  tbb::parallel_invoke([&] { set(m_vertices, vertex_boxes); }, [&] { set(m_edges, edges); },
+                       [&] { set(m_faces, faces); });
+}
+
+FeaturePairs FeatureBoxTrees::overlapping_pairs(const TriangleMesh& mesh) const {
   // Each thread collects its pairs; the lists are joined at the end.
   tbb::enumerable_thread_specific<FeaturePairs> found;
-  vertex_tree.parallel_for_each_overlapping_pair(face_tree, [&](Index v, Index f) {
+  m_vertices.parallel_for_each_overlapping_pair(m_faces, [&](Index v, Index f) {
     if (!face_holds(mesh, f, v)) found.local().vertex_face.push_back({v, f});
   });
-  edge_tree.parallel_for_each_self_overlapping_pair([&](Index e, Index g) {
+  m_edges.parallel_for_each_self_overlapping_pair([&](Index e, Index g) {
     if (!edges_share_an_end(mesh, e, g))
       found.local().edge_edge.push_back({std::min(e, g), std::max(e, g)});
   });
@@ -47,6 +55,13 @@ FeaturePairs overlapping_feature_pairs(const TriangleMesh& mesh,
     pairs.edge_edge.insert(pairs.edge_edge.end(), part.edge_edge.begin(), part.edge_edge.end());
   }
   return pairs;
+}
+
+FeaturePairs overlapping_feature_pairs(const TriangleMesh& mesh,
+                                       const std::vector<Aabb>& vertex_boxes) {
+  FeatureBoxTrees trees;
+  trees.update(mesh, vertex_boxes);
+  return trees.overlapping_pairs(mesh);
 }
 
 }  // namespace tailor

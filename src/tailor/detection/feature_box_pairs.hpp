@@ -7,15 +7,32 @@
 #include <vector>
 
 #include "tailor/bvh/aabb.hpp"
+#include "tailor/bvh/bvh.hpp"
 #include "tailor/candidates/primitive_pair.hpp"
 #include "tailor/mesh/triangle_mesh.hpp"
 
 namespace tailor {
 
-/// Every vertex-face pair (a face not holding the vertex) and edge-edge pair (edges without
-/// a common end, edge_a < edge_b) of `mesh` whose boxes overlap (closed boxes), the box of
-/// an edge or a face being the union of its vertices' boxes `vertex_boxes` (one per
-/// vertex). Unordered.
+/// The three trees (vertices, edges, faces) of overlapping_feature_pairs, kept for repeated
+/// searches on one mesh: built on the first update, refitted on later ones. A refitted tree
+/// finds the same pairs as a new one (every node's box is recomputed from its leaves); it
+/// only gets slower when the mesh has moved far from the configuration it was built on.
+class FeatureBoxTrees {
+ public:
+  /// Sets the box of every vertex of `mesh` (one per vertex); an edge's or a face's box is
+  /// the union of its vertices' boxes. `mesh` must be the one of earlier updates.
+  void update(const TriangleMesh& mesh, const std::vector<Aabb>& vertex_boxes);
+
+  /// Every vertex-face pair (a face not holding the vertex) and edge-edge pair (edges
+  /// without a common end, edge_a < edge_b) whose boxes overlap (closed boxes); the trees
+  /// are walked in parallel. Unordered.
+  FeaturePairs overlapping_pairs(const TriangleMesh& mesh) const;
+
+ private:
+  Bvh m_vertices, m_edges, m_faces;
+};
+
+/// The pairs of FeatureBoxTrees::overlapping_pairs, from trees built for this call.
 FeaturePairs overlapping_feature_pairs(const TriangleMesh& mesh,
                                        const std::vector<Aabb>& vertex_boxes);
 

@@ -58,6 +58,11 @@ std::vector<Pair> keep_within(std::vector<Pair> candidates, Within&& within) {
 }  // namespace
 
 ProximityPairs proximity_pairs(const TriangleMesh& mesh, const Positions& x, double thickness) {
+  return ProximitySearch(mesh).pairs(x, thickness);
+}
+
+ProximityPairs ProximitySearch::pairs(const Positions& x, double thickness) {
+  const TriangleMesh& mesh = *m_mesh;
   check_configuration(mesh, x, thickness);
   std::vector<Aabb> vertices(static_cast<std::size_t>(mesh.num_vertices()));
   for (Index v = 0; v < mesh.num_vertices(); ++v) {
@@ -65,7 +70,8 @@ ProximityPairs proximity_pairs(const TriangleMesh& mesh, const Positions& x, dou
     point.extend(position(x, v));
     vertices[v] = grown_outwards(point, 0.5 * thickness);
   }
-  FeaturePairs candidates = overlapping_feature_pairs(mesh, vertices);
+  m_trees.update(mesh, vertices);
+  FeaturePairs candidates = m_trees.overlapping_pairs(mesh);
   const auto by_vertex = [](const VertexFacePair& a, const VertexFacePair& b) {
     return a.vertex != b.vertex ? a.vertex < b.vertex : a.face < b.face;
   };

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tailor/candidates/primitive_pair.hpp"
+#include "tailor/detection/feature_box_pairs.hpp"
 #include "tailor/geometry/types.hpp"
 #include "tailor/mesh/triangle_mesh.hpp"
 
@@ -26,6 +27,22 @@ using ProximityPairs = FeaturePairs;
 /// The exact tests run in parallel. Throws InputError when `x` does not hold one finite row
 /// per vertex or `thickness` is negative or not finite.
 ProximityPairs proximity_pairs(const TriangleMesh& mesh, const Positions& x, double thickness);
+
+/// proximity_pairs for repeated calls on one mesh (a simulator's every step): the culling
+/// trees are built on the first call and refitted on later ones (FeatureBoxTrees); the
+/// pairs are those of proximity_pairs.
+class ProximitySearch {
+ public:
+  /// A search over `mesh`, which must outlive it.
+  explicit ProximitySearch(const TriangleMesh& mesh) : m_mesh(&mesh) {}
+
+  /// The pairs of proximity_pairs(mesh, x, thickness), with the same checks.
+  ProximityPairs pairs(const Positions& x, double thickness);
+
+ private:
+  const TriangleMesh* m_mesh;
+  FeatureBoxTrees m_trees;
+};
 
 /// The same pairs from the exact test of every vertex-face and edge-edge pair (quadratic;
 /// the oracle of the tests).

@@ -67,6 +67,8 @@ struct SelfCollisionDetector::Impl {
   bool root_certified = false;
   PrimitivePairGenerator generator;
   ExactPairTester tester;
+  // Collisions with a thickness: the trees over grown swept boxes, refitted each step.
+  FeatureBoxTrees thickness_trees;
 
   Impl(const TriangleMesh& mesh_, const Positions& x_build, DetectionConfig config_,
        std::vector<std::vector<Index>> section_loops)
@@ -187,7 +189,8 @@ struct SelfCollisionDetector::Impl {
       boxes[static_cast<std::size_t>(v)] =
           grown_outwards(swept_box(x0, x1, {v}), 0.5 * config.thickness);
     }
-    const FeaturePairs pairs = overlapping_feature_pairs(mesh, boxes);
+    thickness_trees.update(mesh, boxes);
+    const FeaturePairs pairs = thickness_trees.overlapping_pairs(mesh);
     stats.traversal_ms = milliseconds_since(stage);
     stats.vf_tested = static_cast<std::int64_t>(pairs.vertex_face.size());
     stats.ee_tested = static_cast<std::int64_t>(pairs.edge_edge.size());

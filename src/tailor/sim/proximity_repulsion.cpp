@@ -38,11 +38,8 @@ struct EndBoxes {
 
 ProximityRepulsion::ProximityRepulsion(const TriangleMesh& cloth, const Positions& x_build,
                                        std::vector<char> pinned)
-    : m_cloth(cloth), m_pinned(std::move(pinned)) {
-  const EndBoxes boxes(cloth, x_build, 0);
-  m_points = Bvh(boxes.vertices);
-  m_edges = Bvh(boxes.edges);
-  m_faces = Bvh(boxes.faces);
+    : m_cloth(cloth), m_pinned(std::move(pinned)), m_search(cloth) {
+  m_points = Bvh(EndBoxes(cloth, x_build, 0).vertices);
 }
 
 std::int64_t ProximityRepulsion::repel_obstacle(const Positions& x0, Positions& x1,
@@ -110,22 +107,10 @@ std::int64_t ProximityRepulsion::repel_obstacle(const Positions& x0, Positions& 
 
 std::int64_t ProximityRepulsion::repel_cloth(const Positions& x0, Positions& x1, double h,
                                              const ContactResponse& response) {
-  const EndBoxes boxes(m_cloth, x1, 0.5 * h);
-  m_points.refit(boxes.vertices);
-  m_edges.refit(boxes.edges);
-  m_faces.refit(boxes.faces);
+  // The library's exact proximity pairs at the end positions (detection/proximity_pairs).
+  const ProximityPairs pairs = m_search.pairs(x1, h);
   const auto& F = m_cloth.faces();
   const auto& E = m_cloth.edges();
-  // Each vertex-face and each edge-edge pair is visited once by the traversals.
-  std::vector<std::pair<Index, Index>> vf, ee;
-  m_points.for_each_overlapping_pair(m_faces, [&](Index v, Index f) {
-    if (v != F(f, 0) && v != F(f, 1) && v != F(f, 2)) vf.emplace_back(v, f);
-  });
-  m_edges.for_each_self_overlapping_pair([&](Index e, Index d) {
-    if (E(e, 0) == E(d, 0) || E(e, 0) == E(d, 1) || E(e, 1) == E(d, 0) || E(e, 1) == E(d, 1))
-      return;
-    ee.emplace_back(std::min(e, d), std::max(e, d));
-  });
   std::int64_t count = 0;
   const auto repel = [&](Contact& c) {
     // Distance and direction at t1 (from the current x1).
@@ -149,14 +134,14 @@ std::int64_t ProximityRepulsion::repel_cloth(const Positions& x0, Positions& x1,
     const double push = std::min(overlap, std::max(0.0, -rn)) + 0.1 * overlap;
     if (response.push_apart(c, push, x1)) ++count;
   };
-  for (const auto& [v, f] : vf) {
+  for (const auto& [v, f] : pairs.vertex_face) {
     Contact c;
     c.points = {response.cloth_point(v, x0, x1), response.cloth_point(F(f, 0), x0, x1),
                 response.cloth_point(F(f, 1), x0, x1), response.cloth_point(F(f, 2), x0, x1)};
     set_vertex_face_weights(c, 1.0);
     repel(c);
   }
-  for (const auto& [e, d] : ee) {
+  for (const auto& [e, d] : pairs.edge_edge) {
     Contact c;
     c.points = {response.cloth_point(E(e, 0), x0, x1), response.cloth_point(E(e, 1), x0, x1),
                 response.cloth_point(E(d, 0), x0, x1), response.cloth_point(E(d, 1), x0, x1)};

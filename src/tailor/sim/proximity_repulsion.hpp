@@ -8,13 +8,15 @@
 #include <vector>
 
 #include "tailor/bvh/bvh.hpp"
+#include "tailor/detection/proximity_pairs.hpp"
 #include "tailor/mesh/triangle_mesh.hpp"
 #include "tailor/sim/contact_response.hpp"
 #include "tailor/sim/kinematic_obstacle.hpp"
 
 namespace tailor {
 
-/// Repulsion passes of one cloth mesh (trees built once, refitted per call).
+/// Repulsion passes of one cloth mesh (the obstacle search's trees built once, refitted per
+/// call).
 class ProximityRepulsion {
  public:
   /// `pinned[v]` (one per cloth vertex) marks vertices that never move. `cloth` must
@@ -31,15 +33,16 @@ class ProximityRepulsion {
   /// Vertex-face and edge-edge pairs of the cloth (sharing no vertex) closer than
   /// `thickness` at the end of the step, that were on the same side at the start, get a
   /// push that cancels their approach up to the overlap plus a tenth of the overlap.
-  /// Candidate pairs: boxes of the end positions grown by thickness/2 overlap, which
-  /// every pair closer than `thickness` passes. Returns the pairs pushed.
+  /// The pairs are the library's exact proximity pairs at the end positions
+  /// (detection/proximity_pairs.hpp). Returns the pairs pushed.
   std::int64_t repel_cloth(const Positions& x0, Positions& x1, double thickness,
                            const ContactResponse& response);
 
  private:
   const TriangleMesh& m_cloth;
   std::vector<char> m_pinned;
-  Bvh m_points, m_edges, m_faces, m_obstacle_faces;
+  Bvh m_points, m_obstacle_faces;  // cloth vertices, the obstacle's faces
+  ProximitySearch m_search;        // the cloth's own pairs
   const TriangleMesh* m_obstacle = nullptr;
 };
 
