@@ -66,16 +66,18 @@ class Bvh {
   template <class Visit>
   void for_each_self_overlapping_pair(Visit&& visit) const;
 
-  /// The pairs of for_each_overlapping_pair, with large subtree pairs walked in parallel:
-  /// `visit` is called from several threads at once, in no fixed order.
-  template <class Visit>
-  void parallel_for_each_overlapping_pair(const Bvh& other, Visit&& visit) const {
-    if (!empty() && !other.empty()) parallel_pair(0, other, 0, visit);
+  /// The pairs of for_each_overlapping_pair, with large subtree pairs walked in parallel as
+  /// tasks: each task calls `local()` once for its sink (a per-thread buffer, say), then
+  /// `visit(sink, p, q)` for its pairs. Tasks run on several threads at once, in no fixed
+  /// order.
+  template <class Local, class Visit>
+  void parallel_for_each_overlapping_pair(const Bvh& other, Local&& local, Visit&& visit) const {
+    if (!empty() && !other.empty()) parallel_pair(0, other, 0, local, visit);
   }
   /// The pairs of for_each_self_overlapping_pair, walked in parallel as above.
-  template <class Visit>
-  void parallel_for_each_self_overlapping_pair(Visit&& visit) const {
-    if (!empty()) parallel_self(0, visit);
+  template <class Local, class Visit>
+  void parallel_for_each_self_overlapping_pair(Local&& local, Visit&& visit) const {
+    if (!empty()) parallel_self(0, local, visit);
   }
 
  private:
@@ -99,10 +101,10 @@ class Bvh {
   void pair_recursive(Index a, const Bvh& other, Index b, Visit& visit) const;
   template <class Visit>
   void self_recursive(Index a, Visit& visit) const;
-  template <class Visit>
-  void parallel_pair(Index a, const Bvh& other, Index b, Visit& visit) const;
-  template <class Visit>
-  void parallel_self(Index a, Visit& visit) const;
+  template <class Local, class Visit>
+  void parallel_pair(Index a, const Bvh& other, Index b, Local& local, Visit& visit) const;
+  template <class Local, class Visit>
+  void parallel_self(Index a, Local& local, Visit& visit) const;
 
   std::vector<Index> m_left, m_right, m_parent;  // leaf: left = -1, right = primitive
   std::vector<Index> m_first, m_count;           // range in m_primitive_order
@@ -145,26 +147,34 @@ void Bvh::self_recursive(Index a, Visit& visit) const {
 }
 
 // The walk of pair_recursive, splitting the same node, with both halves as tasks while the
-// pair holds more than kParallelGrain primitives.
-template <class Visit>
-void Bvh::parallel_pair(Index a, const Bvh& other, Index b, Visit& visit) const {
-  if (m_count[a] + other.m_count[b] <= kParallelGrain) return pair_recursive(a, other, b, visit);
+// pair holds more than kParallelGrain primitives; below, one task walks it sequentially.
+template <class Local, class Visit>
+void Bvh::parallel_pair(Index a, const Bvh& other, Index b, Local& local, Visit& visit) const {
+  if (m_count[a] + other.m_count[b] <= kParallelGrain) {
+    auto& sink = local();
+    auto to_sink = [&](Index p, Index q) { visit(sink, p, q); };
+    return pair_recursive(a, other, b, to_sink);
+  }
   if (!m_boxes[a].overlaps(other.m_boxes[b])) return;
   if (other.is_leaf(b) || (!is_leaf(a) && m_count[a] >= other.m_count[b])) {
-    tbb::parallel_invoke([&] { parallel_pair(m_left[a], other, b, visit); },
-                         [&] { parallel_pair(m_right[a], other, b, visit); });
+    tbb::parallel_invoke([&] { parallel_pair(m_left[a], other, b, local, visit); },
+                         [&] { parallel_pair(m_right[a], other, b, local, visit); });
   } else {
-    tbb::parallel_invoke([&] { parallel_pair(a, other, other.m_left[b], visit); },
-                         [&] { parallel_pair(a, other, other.m_right[b], visit); });
+    tbb::parallel_invoke([&] { parallel_pair(a, other, other.m_left[b], local, visit); },
+                         [&] { parallel_pair(a, other, other.m_right[b], local, visit); });
   }
 }
 
-template <class Visit>
-void Bvh::parallel_self(Index a, Visit& visit) const {
-  if (m_count[a] <= kParallelGrain) return self_recursive(a, visit);
-  tbb::parallel_invoke([&] { parallel_self(m_left[a], visit); },
-                       [&] { parallel_self(m_right[a], visit); },
-                       [&] { parallel_pair(m_left[a], *this, m_right[a], visit); });
+template <class Local, class Visit>
+void Bvh::parallel_self(Index a, Local& local, Visit& visit) const {
+  if (m_count[a] <= kParallelGrain) {
+    auto& sink = local();
+    auto to_sink = [&](Index p, Index q) { visit(sink, p, q); };
+    return self_recursive(a, to_sink);
+  }
+  tbb::parallel_invoke([&] { parallel_self(m_left[a], local, visit); },
+                       [&] { parallel_self(m_right[a], local, visit); },
+                       [&] { parallel_pair(m_left[a], *this, m_right[a], local, visit); });
 }
 
 }  // namespace tailor

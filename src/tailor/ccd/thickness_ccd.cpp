@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -108,8 +109,8 @@ class EarliestWithin {
     if (speed_ == 0) {  // nothing moves relative to the other primitive: one decision
       result_.intervals = 1;
       const Truth at_start = conditions_(BoxedStep{m_, Ball(0.0)}, h2_, never_);
-      result_.hit = at_start == Truth::unknown ? exactly_within(0.0, exact_h2_)
-                                               : at_start == Truth::yes;
+      result_.hit =
+          at_start == Truth::unknown ? exactly_within(0.0, exact_h2_) : at_start == Truth::yes;
       result_.toi = result_.hit ? 0.0 : 1.0;
       return result_;
     }
@@ -123,11 +124,14 @@ class EarliestWithin {
       const Truth within = conditions_(BoxedStep{m_, detail::ball_hull(lo, hi)}, h2_, never_);
       if (within == Truth::no) continue;
       if (within == Truth::yes) return hit(lo, false);
+      // The whole step undecided: within h at t = 0 already (balls on the exact start
+      // positions, exact when they cannot tell) makes the earliest time 0, with no search.
+      if (result_.intervals == 1 && within_at(0.0, exact_h2_)) return hit(0.0, false);
       const double mid = 0.5 * lo + 0.5 * hi;
       if (clear_by_lipschitz(lo, hi, mid, hi - lo <= kExactLipschitzBelow)) continue;
       if (hi - lo <= narrowest_) {
         // Narrow enough: within h √(1 + 2e-6) ≤ (1 + 1e-6) h at the midpoint, or clear.
-        if (exactly_within(mid, exact_h2_ * mpq_class(500001, 500000))) return hit(lo, false);
+        if (within_at(mid, exact_h2_ * mpq_class(500001, 500000))) return hit(lo, false);
         continue;
       }
       if (result_.intervals >= kMaxThicknessIntervals || mid <= lo || mid >= hi ||
@@ -151,6 +155,20 @@ class EarliestWithin {
   ThicknessResult hit(double toi, bool exhausted) {
     result_.hit = true, result_.toi = toi, result_.exhausted = exhausted;
     return result_;
+  }
+
+  /// Whether the exact positions at the time t are within sqrt(h2): balls around them
+  /// first (they enclose the exact positions, so a decided answer is the exact one), exact
+  /// rationals when the balls cannot decide.
+  bool within_at(double t, const mpq_class& h2) const {
+    const double value = h2.get_d();  // truncated: within a relative 2^-52 (or 2^-1074)
+    if (std::isfinite(value)) {
+      const Ball ball_h2(value,
+                         std::fabs(value) * 0x1p-50 + std::numeric_limits<double>::denorm_min());
+      const Truth near = conditions_(BoxedStep{m_, Ball(t)}, ball_h2, never_);
+      if (near != Truth::unknown) return near == Truth::yes;
+    }
+    return exactly_within(t, h2);
   }
 
   /// Whether the exact positions at the time t are within sqrt(h2) (exact).

@@ -17,9 +17,13 @@
 /// combination of these, and a distance between moving sets changes no faster than its
 /// points' relative speed. An undecided interval wider than that is first tried with the
 /// same bound: farther than h + L w / 2 at its midpoint (balls, then exact), it is clear.
-/// At the narrowest width the midpoint t_m decides, in
-/// exact rationals on the exact positions at t_m: if the pair is within h √(1 + 2e-6) ≤
+/// At the narrowest width the midpoint t_m decides, on
+/// the exact positions at t_m (balls around them first, which settle the answer whenever
+/// they decide; exact rationals otherwise): if the pair is within h √(1 + 2e-6) ≤
 /// (1 + 1e-6) h at t_m it is reported, otherwise no t of the interval can be within h.
+/// When the whole step is undecided, the pair's distance at t = 0 is decided first, the
+/// same way: within h there, its earliest time is 0, with no search (on cloth-ball's
+/// thickness step 41 % of the pairs within h are, and they took most of the search time).
 ///
 /// Guarantees: never a false negative; a pair reported has a minimum distance over the step
 /// of at most (1 + 1e-6) h; its `toi` is never later than the earliest time it comes within h

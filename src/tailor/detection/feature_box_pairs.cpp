@@ -38,21 +38,31 @@ void FeatureBoxTrees::update(const TriangleMesh& mesh, const std::vector<Aabb>& 
                        [&] { set(m_faces, faces); });
 }
 
-FeaturePairs FeatureBoxTrees::overlapping_pairs(const TriangleMesh& mesh) const {
-  // Each thread collects its pairs; the lists are joined at the end.
+std::vector<FeaturePairs> FeatureBoxTrees::overlapping_pair_parts(const TriangleMesh& mesh) const {
+  // Each thread collects its pairs.
   tbb::enumerable_thread_specific<FeaturePairs> found;
-  m_vertices.parallel_for_each_overlapping_pair(m_faces, [&](Index v, Index f) {
-    if (!face_holds(mesh, f, v)) found.local().vertex_face.push_back({v, f});
+  const auto local = [&]() -> FeaturePairs& { return found.local(); };
+  m_vertices.parallel_for_each_overlapping_pair(m_faces, local,
+                                                [&](FeaturePairs& sink, Index v, Index f) {
+                                                  if (!face_holds(mesh, f, v))
+                                                    sink.vertex_face.push_back({v, f});
+                                                });
+  m_edges.parallel_for_each_self_overlapping_pair(local, [&](FeaturePairs& sink, Index e, Index g) {
+    if (!edges_share_an_end(mesh, e, g)) sink.edge_edge.push_back({std::min(e, g), std::max(e, g)});
   });
-  m_edges.parallel_for_each_self_overlapping_pair([&](Index e, Index g) {
-    if (!edges_share_an_end(mesh, e, g))
-      found.local().edge_edge.push_back({std::min(e, g), std::max(e, g)});
-  });
+  std::vector<FeaturePairs> parts;
+  for (FeaturePairs& part : found) parts.push_back(std::move(part));
+  return parts;
+}
+
+FeaturePairs FeatureBoxTrees::overlapping_pairs(const TriangleMesh& mesh) const {
+  std::vector<FeaturePairs> parts = overlapping_pair_parts(mesh);
   FeaturePairs pairs;
-  for (const FeaturePairs& part : found) {
+  for (FeaturePairs& part : parts) {
     pairs.vertex_face.insert(pairs.vertex_face.end(), part.vertex_face.begin(),
                              part.vertex_face.end());
     pairs.edge_edge.insert(pairs.edge_edge.end(), part.edge_edge.begin(), part.edge_edge.end());
+    part = {};  // freed as it is copied
   }
   return pairs;
 }

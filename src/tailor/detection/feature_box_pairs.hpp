@@ -27,6 +27,9 @@ class FeatureBoxTrees {
   /// without a common end, edge_a < edge_b) whose boxes overlap (closed boxes); the trees
   /// are walked in parallel. Unordered.
   FeaturePairs overlapping_pairs(const TriangleMesh& mesh) const;
+  /// The same pairs, left in the parts the walk's threads collected (no joined copy: half
+  /// the memory on a contact-heavy step).
+  std::vector<FeaturePairs> overlapping_pair_parts(const TriangleMesh& mesh) const;
 
  private:
   Bvh m_vertices, m_edges, m_faces;

@@ -190,13 +190,19 @@ struct SelfCollisionDetector::Impl {
           grown_outwards(swept_box(x0, x1, {v}), 0.5 * config.thickness);
     }
     thickness_trees.update(mesh, boxes);
-    const FeaturePairs pairs = thickness_trees.overlapping_pairs(mesh);
+    const std::vector<FeaturePairs> parts = thickness_trees.overlapping_pair_parts(mesh);
     stats.traversal_ms = milliseconds_since(stage);
-    stats.vf_tested = static_cast<std::int64_t>(pairs.vertex_face.size());
-    stats.ee_tested = static_cast<std::int64_t>(pairs.edge_edge.size());
+    std::vector<std::span<const VertexFacePair>> vertex_face;
+    std::vector<std::span<const EdgeEdgePair>> edge_edge;
+    for (const FeaturePairs& part : parts) {
+      vertex_face.emplace_back(part.vertex_face);
+      edge_edge.emplace_back(part.edge_edge);
+      stats.vf_tested += static_cast<std::int64_t>(part.vertex_face.size());
+      stats.ee_tested += static_cast<std::int64_t>(part.edge_edge.size());
+    }
     const auto ccd = SteadyClock::now();
     tester.begin_step();
-    tester.test(mesh, x0, x1, pairs.vertex_face, pairs.edge_edge);
+    tester.test(mesh, x0, x1, vertex_face, edge_edge);
     CollisionSet collisions = tester.take_collisions(mesh);
     stats.ccd_ms = milliseconds_since(ccd);
     record_counts(stats, collisions);
