@@ -79,8 +79,7 @@ void flush(PairKind kind, PairFilters filters, ThreadOutput& out) {
   std::int64_t& after_filter =
       kind == PairKind::vertex_face ? out.counts.vf_after_filter : out.counts.ee_after_filter;
   for (int i = 0; i < batch.count; ++i) {
-    if (verdicts[i] == PairVerdict::never_coplanar) continue;
-    ++after_filter;
+    after_filter += verdicts[i] != PairVerdict::never_coplanar;  // no branch: a coin toss
     if (verdicts[i] == PairVerdict::may_touch)
       keep(kind, batch.first_id[i], batch.second_id[i], out);
   }
@@ -106,22 +105,22 @@ class Stages {
   // meets the face's plane.
   void vertex_face(Index v, Index f, Corner p, Corner a, Corner b, Corner c, const Box& p_box,
                    const Box& face_box, bool off_plane, ThreadOutput& out) const {
+    // Counted without branches; one branch for the pairs that go on (both are hard to
+    // predict: about half the pairs pass the boxes).
+    const bool boxes_meet = !m_options.primitive_boxes || overlap(p_box, face_box);
     ++out.counts.vf_generated;
-    if (m_options.primitive_boxes && !overlap(p_box, face_box)) return;
-    ++out.counts.vf_after_boxes;
-    if (off_plane) return;
-    submit(PairKind::vertex_face, v, f, {a, b, c, p}, out);
+    out.counts.vf_after_boxes += boxes_meet;
+    if (boxes_meet & !off_plane) submit(PairKind::vertex_face, v, f, {a, b, c, p}, out);
   }
 
   // The same for EE pair (e1, e2), e1 < e2, edges ab and cd. `off_plane`: the triangle
   // filter proved that one edge never meets the plane of the other's triangle.
   void edge_edge(Index e1, Index e2, Corner a, Corner b, Corner c, Corner d, const Box& box1,
                  const Box& box2, bool off_plane, ThreadOutput& out) const {
+    const bool boxes_meet = !m_options.primitive_boxes || overlap(box1, box2);
     ++out.counts.ee_generated;
-    if (m_options.primitive_boxes && !overlap(box1, box2)) return;
-    ++out.counts.ee_after_boxes;
-    if (off_plane) return;
-    submit(PairKind::edge_edge, e1, e2, {a, b, c, d}, out);
+    out.counts.ee_after_boxes += boxes_meet;
+    if (boxes_meet & !off_plane) submit(PairKind::edge_edge, e1, e2, {a, b, c, d}, out);
   }
 
   // A VF pair by ids (the isolated set).
@@ -195,15 +194,17 @@ class Stages {
       const Box box_f = joined(corner_boxes[0][i], corner_boxes[0][i1]);
       const Box box_g = joined(corner_boxes[1][j], corner_boxes[1][j1]);
       // Orient each edge as stored (a < b) and order the pair by edge id, so that a pair
-      // reaches the filters with the same coordinates whichever CTP owes it.
-      Corner a = corners[0][i], b = corners[0][i1], c = corners[1][j], d = corners[1][j1];
-      if (face[0][i] > face[0][i1]) std::swap(a, b);
-      if (face[1][j] > face[1][j1]) std::swap(c, d);
-      if (ef < eg) {
-        edge_edge(ef, eg, a, b, c, d, box_f, box_g, off_plane, out);
-      } else {
-        edge_edge(eg, ef, c, d, a, b, box_g, box_f, off_plane, out);
-      }
+      // reaches the filters with the same coordinates whichever CTP owes it. Selected, not
+      // branched on: each choice is a coin toss for the branch predictor.
+      const int f_low = face[0][i] < face[0][i1] ? i : i1, f_high = i + i1 - f_low;
+      const int g_low = face[1][j] < face[1][j1] ? j : j1, g_high = j + j1 - g_low;
+      const bool f_first = ef < eg;
+      const int s1 = f_first ? 0 : 1;
+      const int low1 = f_first ? f_low : g_low, high1 = f_first ? f_high : g_high;
+      const int low2 = f_first ? g_low : f_low, high2 = f_first ? g_high : f_high;
+      edge_edge(std::min(ef, eg), std::max(ef, eg), corners[s1][low1], corners[s1][high1],
+                corners[1 - s1][low2], corners[1 - s1][high2], f_first ? box_f : box_g,
+                f_first ? box_g : box_f, off_plane, out);
     }
   }
 
@@ -400,11 +401,17 @@ void PrimitivePairGenerator::add_triangle_pairs(std::span<const TrianglePair> ct
       if (options.triangle_filter) {
         triangle_pair_sides(m_mesh->faces(), x0, x1, chunk, std::span(sides.data(), count));
       }
+      // The CTPs the filter kept, listed without a branch per CTP (about two in three
+      // are separated, in no predictable order), then expanded.
+      std::array<std::uint8_t, kChunk> kept;
+      std::size_t num_kept = 0;
       for (std::size_t i = 0; i < count; ++i) {
-        if (sides[i].separated()) {
-          ++local.counts.triangle_pairs_separated;
-          continue;
-        }
+        kept[num_kept] = static_cast<std::uint8_t>(i);
+        num_kept += !sides[i].separated();
+      }
+      local.counts.triangle_pairs_separated += static_cast<std::int64_t>(count - num_kept);
+      for (std::size_t k = 0; k < num_kept; ++k) {
+        const std::size_t i = kept[k];
         stages.expand(chunk[i].first, chunk[i].second, sides[i], local);
       }
     }
