@@ -1,6 +1,7 @@
 /// @file
 /// `tailor.detect` (the one-off form), `tailor.brute_force`, `tailor.proximity_pairs` (one
-/// configuration), `tailor.collision_free_step`, `tailor.SelfCollisionDetector`
+/// configuration) and `tailor.ProximitySearch` (its repeated form), `tailor.collision_free_step`,
+/// `tailor.SelfCollisionDetector`
 /// (for many steps of one mesh) and `tailor.DetectionResult` (DetectionConfig:
 /// detection_config.cpp).
 
@@ -149,6 +150,47 @@ class PyDetector {
   std::optional<SelfCollisionDetector> m_detector;
 };
 
+/// Proximity pairs as Python arrays: (vertex_face, edge_edge), (k, 2) each.
+py::tuple pairs_to_python(const ProximityPairs& pairs) {
+  py::array_t<Index> vf({static_cast<py::ssize_t>(pairs.vertex_face.size()), py::ssize_t{2}});
+  py::array_t<Index> ee({static_cast<py::ssize_t>(pairs.edge_edge.size()), py::ssize_t{2}});
+  auto vf_out = vf.mutable_unchecked<2>();
+  auto ee_out = ee.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < vf_out.shape(0); ++i) {
+    vf_out(i, 0) = pairs.vertex_face[static_cast<std::size_t>(i)].vertex;
+    vf_out(i, 1) = pairs.vertex_face[static_cast<std::size_t>(i)].face;
+  }
+  for (py::ssize_t i = 0; i < ee_out.shape(0); ++i) {
+    ee_out(i, 0) = pairs.edge_edge[static_cast<std::size_t>(i)].edge_a;
+    ee_out(i, 1) = pairs.edge_edge[static_cast<std::size_t>(i)].edge_b;
+  }
+  return py::make_tuple(vf, ee);
+}
+
+/// A ProximitySearch with the mesh it searches (kept alive) and its worker threads.
+class PyProximitySearch {
+ public:
+  PyProximitySearch(MeshPtr mesh, int threads)
+      : m_mesh(std::move(mesh)),
+        m_search(*m_mesh),
+        m_arena(threads > 0 ? threads : tbb::task_arena::automatic) {}
+
+  py::tuple pairs(py::handle x, double thickness) {
+    const Positions positions = to_positions(x, "x");
+    ProximityPairs pairs;
+    {
+      py::gil_scoped_release release;
+      pairs = m_arena.execute([&] { return m_search.pairs(positions, thickness); });
+    }
+    return pairs_to_python(pairs);
+  }
+
+ private:
+  MeshPtr m_mesh;
+  ProximitySearch m_search;
+  tbb::task_arena m_arena;
+};
+
 }  // namespace
 
 void bind_detection(py::module_& m) {
@@ -243,10 +285,10 @@ void bind_detection(py::module_& m) {
         }
         py::dict out;
         out["alpha"] = step.alpha;
-        out["vertex_face"] = step.vertex_face
-                                 ? py::object(py::make_tuple(step.vertex_face->vertex,
-                                                             step.vertex_face->face))
-                                 : py::object(py::none());
+        out["vertex_face"] =
+            step.vertex_face
+                ? py::object(py::make_tuple(step.vertex_face->vertex, step.vertex_face->face))
+                : py::object(py::none());
         out["edge_edge"] = step.edge_edge
                                ? py::object(py::make_tuple(step.edge_edge->a0, step.edge_edge->a1,
                                                            step.edge_edge->b0, step.edge_edge->b1))
@@ -272,25 +314,23 @@ void bind_detection(py::module_& m) {
           tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
           pairs = arena.execute([&] { return proximity_pairs(*mesh, positions, thickness); });
         }
-        py::array_t<Index> vf({static_cast<py::ssize_t>(pairs.vertex_face.size()), py::ssize_t{2}});
-        py::array_t<Index> ee({static_cast<py::ssize_t>(pairs.edge_edge.size()), py::ssize_t{2}});
-        auto vf_out = vf.mutable_unchecked<2>();
-        auto ee_out = ee.mutable_unchecked<2>();
-        for (py::ssize_t i = 0; i < vf_out.shape(0); ++i) {
-          vf_out(i, 0) = pairs.vertex_face[static_cast<std::size_t>(i)].vertex;
-          vf_out(i, 1) = pairs.vertex_face[static_cast<std::size_t>(i)].face;
-        }
-        for (py::ssize_t i = 0; i < ee_out.shape(0); ++i) {
-          ee_out(i, 0) = pairs.edge_edge[static_cast<std::size_t>(i)].edge_a;
-          ee_out(i, 1) = pairs.edge_edge[static_cast<std::size_t>(i)].edge_b;
-        }
-        return py::make_tuple(vf, ee);
+        return pairs_to_python(pairs);
       },
       py::arg("mesh"), py::arg("x"), py::arg("thickness"), py::kw_only(), py::arg("threads") = 0,
       "Every vertex-face and edge-edge pair of one configuration `x` ((n, 3) positions) "
       "within `thickness` of each other, exactly (as C++ tailor::proximity_pairs): a tuple "
       "(vertex_face, edge_edge) of (k, 2) arrays of (vertex, face) and (edge, edge) ids "
       "(Mesh.edges numbering), sorted; pairs sharing a vertex are left out.");
+
+  py::class_<PyProximitySearch>(m, "ProximitySearch",
+                                "proximity_pairs for repeated calls on one mesh (a simulator's "
+                                "every step): the culling trees are built on the first call and "
+                                "refitted on later ones (as C++ tailor::ProximitySearch).")
+      .def(py::init<MeshPtr, int>(), py::arg("mesh"), py::kw_only(), py::arg("threads") = 0,
+           "`mesh`: a tailor.Mesh; `threads`: 0 = all cores.")
+      .def("pairs", &PyProximitySearch::pairs, py::arg("x"), py::arg("thickness"),
+           "The pairs of tailor.proximity_pairs(mesh, x, thickness): a tuple (vertex_face, "
+           "edge_edge) of sorted (k, 2) id arrays. The GIL is released while it runs.");
 
   m.def(
       "brute_force",

@@ -12,7 +12,8 @@ built once). ``method`` is a preset name (basic, curtis, tang, paper) or a Detec
 ``DetectionConfig.settings()`` lists every setting with its default, range and whether it
 keeps the result exact, ``DetectionResult.stat_fields()`` every key of ``result.stats``
 (docs/settings.md in the repository). One configuration: ``proximity_pairs(mesh, x,
-thickness)``, every pair within a thickness (for repulsion and barrier methods). With a
+thickness)``, every pair within a thickness (for repulsion and barrier methods), and
+``ProximitySearch(mesh).pairs(x, thickness)`` for the same step after step. With a
 thickness: ``detect(..., thickness=h)`` (every pair that comes within h, at the earliest
 time) and ``collision_free_step(mesh, x0, x1, h)`` (the fraction of a step that keeps
 every pair farther than h apart).
@@ -34,6 +35,7 @@ from ._tailor import (
     DetectionResult,
     InputError,
     Mesh,
+    ProximitySearch,
     SceneConfig,
     SelfCollisionDetector,
     Simulation,
@@ -55,6 +57,7 @@ __all__ = [
     "Frame",
     "InputError",
     "Mesh",
+    "ProximitySearch",
     "SceneConfig",
     "SelfCollisionDetector",
     "Simulation",

@@ -290,3 +290,21 @@ def test_thickness_detection_and_collision_free_step():
                           tailor.detect(faces, x0, short, thickness=0.25).vertex_face)
     with pytest.raises(tailor.InputError):
         tailor.detect(faces, x0, x1, thickness=-1.0)
+
+
+def test_a_proximity_search_reused_over_moving_configurations_finds_the_one_off_pairs():
+    faces, x = two_sheets(0.0625)
+    mesh = tailor.Mesh(faces)
+    search = tailor.ProximitySearch(mesh, threads=2)
+    rng = np.random.default_rng(7)
+    found = 0
+    # The trees are built on the first configuration and refitted on the others, the last
+    # squashed along y (pairs appear whose boxes were apart at first).
+    for x_now in (x, x + 0.01 * rng.standard_normal(x.shape), x * np.array([1.0, 0.2, 1.0])):
+        vf, ee = search.pairs(x_now, 0.0625)
+        one_vf, one_ee = tailor.proximity_pairs(mesh, x_now, 0.0625)
+        assert np.array_equal(vf, one_vf) and np.array_equal(ee, one_ee)
+        found += len(vf) + len(ee)
+    assert found > 0
+    with pytest.raises(tailor.InputError):
+        search.pairs(x, -1.0)
