@@ -30,17 +30,31 @@ struct StepPoints {
 /// The vectors between the four points over a time interval t, as balls: each difference
 /// is formed before the interval, (x0_i - x0_j) + t ((x1_i - x1_j) - (x0_i - x0_j)), so two
 /// points moving together give a difference as narrow as the rounding, not two boxes apart.
-struct BoxedStep {
-  const StepPoints& m;
-  Ball t;
-  V3<Ball> d(int i, int j) const {
-    const auto coordinate = [&](int k) {
-      const Ball start = Ball(m.x0[i][k]) - Ball(m.x0[j][k]);
-      const Ball end = Ball(m.x1[i][k]) - Ball(m.x1[j][k]);
-      return start + t * (end - start);
-    };
-    return {coordinate(0), coordinate(1), coordinate(2)};
+/// The six differences i > j are formed once per interval (the conditions ask for them
+/// about twenty times); d(j, i) is their negation, which is what forming it would give
+/// (round-to-nearest is symmetric: the same midpoint negated, the same radius).
+class BoxedStep {
+ public:
+  BoxedStep(const StepPoints& m, Ball t) {
+    for (int i = 1; i < 4; ++i) {
+      for (int j = 0; j < i; ++j) {
+        const auto coordinate = [&](int k) {
+          const Ball start = Ball(m.x0[i][k]) - Ball(m.x0[j][k]);
+          const Ball end = Ball(m.x1[i][k]) - Ball(m.x1[j][k]);
+          return start + t * (end - start);
+        };
+        m_d[i][j] = {coordinate(0), coordinate(1), coordinate(2)};
+      }
+    }
   }
+  V3<Ball> d(int i, int j) const {
+    if (i > j) return m_d[i][j];
+    const V3<Ball>& v = m_d[j][i];
+    return {-v.x, -v.y, -v.z};
+  }
+
+ private:
+  std::array<std::array<V3<Ball>, 4>, 4> m_d;  // [i][j], i > j
 };
 
 /// The exact positions at the rational time t.
