@@ -61,15 +61,23 @@ struct NeverPresent {
   std::array<bool, 4> segment{};  ///< per point_segment call, in the order made below
 };
 
-/// Point p within h of the closed segment ab (h2 = h²), points by index into `pts`.
+/// Point p within h of the closed segment ab (h2 = h²), points by index into `pts`. The
+/// conditions are evaluated in order and stop once the answer is settled (a `yes` of an
+/// alternative, a `no` of a conjunction): the same answer as evaluating them all.
 template <class T, class Points>
 inline Truth point_segment(const Points& pts, int p, int a, int b, const T& h2, bool no_interior) {
-  const V3<T> u = pts.d(b, a), w = pts.d(p, a), pb = pts.d(p, b);
-  const T ww = dot(w, w), uu = dot(u, u), wu = dot(w, u);
-  const Truth ends = at_least_zero(T(h2 - ww)) || at_least_zero(T(h2 - dot(pb, pb)));
+  const V3<T> w = pts.d(p, a);
+  const T ww = dot(w, w);
+  Truth ends = at_least_zero(T(h2 - ww));
+  if (ends == Truth::yes) return ends;
+  const V3<T> pb = pts.d(p, b);
+  ends = ends || at_least_zero(T(h2 - dot(pb, pb)));
   if (ends == Truth::yes || no_interior) return ends;
-  const Truth between = above_zero(uu) && at_least_zero(wu) && at_least_zero(T(uu - wu)) &&
-                        at_least_zero(T(h2 * uu - (ww * uu - wu * wu)));
+  const V3<T> u = pts.d(b, a);
+  const T uu = dot(u, u), wu = dot(w, u);
+  Truth between = above_zero(uu) && at_least_zero(wu);
+  if (between != Truth::no) between = between && at_least_zero(T(uu - wu));
+  if (between != Truth::no) between = between && at_least_zero(T(h2 * uu - (ww * uu - wu * wu)));
   return ends || between;
 }
 
@@ -79,21 +87,29 @@ inline Truth vertex_face(const Points& pts, const T& h2, const NeverPresent& nev
   const V3<T> ab = pts.d(2, 1), ac = pts.d(3, 1);
   const V3<T> n = cross(ab, ac);
   const T nn = dot(n, n);
-  const T along = dot(pts.d(0, 1), n);
+  const V3<T> ap = pts.d(0, 1);
+  const T along = dot(ap, n);
   const T plane_gap = along * along - h2 * nn;
   // Farther than h from the triangle's plane: farther from the triangle (most candidates).
   if (above_zero(plane_gap) == Truth::yes) return Truth::no;
-  Truth over_face = Truth::no;
+  Truth within = Truth::no;
   if (!never.normal) {
-    const Truth inside = above_zero(nn) && at_least_zero(dot(n, cross(ab, pts.d(0, 1)))) &&
-                         at_least_zero(dot(n, cross(pts.d(3, 2), pts.d(0, 2)))) &&
-                         at_least_zero(dot(n, cross(pts.d(1, 3), pts.d(0, 3))));
-    over_face = inside && at_least_zero(T(-plane_gap));
-    if (over_face == Truth::yes) return over_face;
+    Truth inside = above_zero(nn) && at_least_zero(T(-plane_gap));
+    if (inside != Truth::no) inside = inside && at_least_zero(dot(n, cross(ab, ap)));
+    if (inside != Truth::no) {
+      inside = inside && at_least_zero(dot(n, cross(pts.d(3, 2), pts.d(0, 2))));
+    }
+    if (inside != Truth::no) {
+      inside = inside && at_least_zero(dot(n, cross(pts.d(1, 3), pts.d(0, 3))));
+    }
+    if (inside == Truth::yes) return inside;
+    within = inside;
   }
-  return over_face || point_segment(pts, 0, 1, 2, h2, never.segment[0]) ||
-         point_segment(pts, 0, 2, 3, h2, never.segment[1]) ||
-         point_segment(pts, 0, 3, 1, h2, never.segment[2]);
+  const std::array<std::array<int, 2>, 3> sides{{{1, 2}, {2, 3}, {3, 1}}};
+  for (std::size_t k = 0; k < sides.size() && within != Truth::yes; ++k) {
+    within = within || point_segment(pts, 0, sides[k][0], sides[k][1], h2, never.segment[k]);
+  }
+  return within;
 }
 
 /// Segment (0, 1) within h of segment (2, 3).
@@ -106,17 +122,27 @@ inline Truth edge_edge(const Points& pts, const T& h2, const NeverPresent& never
   const T line_gap = along * along - h2 * nn;
   // The lines are farther than h apart (n ≠ 0 here): so are the segments (most candidates).
   if (above_zero(line_gap) == Truth::yes) return Truth::no;
-  Truth interior = Truth::no;
+  Truth within = Truth::no;
   if (!never.normal) {
-    const T s = dot(cross(w, v), n), t = dot(cross(w, u), n);
-    interior = above_zero(nn) && at_least_zero(s) && at_least_zero(T(nn - s)) && at_least_zero(t) &&
-               at_least_zero(T(nn - t)) && at_least_zero(T(-line_gap));
+    Truth interior = above_zero(nn) && at_least_zero(T(-line_gap));
+    if (interior != Truth::no) {
+      const T s = dot(cross(w, v), n);
+      interior = interior && at_least_zero(s) && at_least_zero(T(nn - s));
+    }
+    if (interior != Truth::no) {
+      const T t = dot(cross(w, u), n);
+      interior = interior && at_least_zero(t) && at_least_zero(T(nn - t));
+    }
     if (interior == Truth::yes) return interior;
+    within = interior;
   }
-  return interior || point_segment(pts, 0, 2, 3, h2, never.segment[0]) ||
-         point_segment(pts, 1, 2, 3, h2, never.segment[1]) ||
-         point_segment(pts, 2, 0, 1, h2, never.segment[2]) ||
-         point_segment(pts, 3, 0, 1, h2, never.segment[3]);
+  // Each end against the other segment: (point, segment ends), in the order of
+  // NeverPresent::segment.
+  const std::array<std::array<int, 3>, 4> ends{{{0, 2, 3}, {1, 2, 3}, {2, 0, 1}, {3, 0, 1}}};
+  for (std::size_t k = 0; k < ends.size() && within != Truth::yes; ++k) {
+    within = within || point_segment(pts, ends[k][0], ends[k][1], ends[k][2], h2, never.segment[k]);
+  }
+  return within;
 }
 
 /// A point as a V3 over T (exact conversion of each coordinate).
