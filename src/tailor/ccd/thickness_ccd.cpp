@@ -135,7 +135,14 @@ class EarliestWithin {
     while (top > 0) {
       const auto [lo, hi] = stack[--top];
       ++result_.intervals;
-      const Truth within = conditions_(BoxedStep{m_, detail::ball_hull(lo, hi)}, h2_, never_);
+      // The conditions over the interval's boxes: on the whole step, and on the narrowest
+      // intervals before their midpoint decides. In between, the Lipschitz test at the
+      // midpoint below clears more for less (cloth-ball: 17.2 -> 11.4 s); skipping a proof
+      // can only split an interval further, never drop a pair.
+      const bool whole_or_narrowest = hi - lo >= 1.0 || hi - lo <= narrowest_;
+      const Truth within = whole_or_narrowest
+                               ? conditions_(BoxedStep{m_, detail::ball_hull(lo, hi)}, h2_, never_)
+                               : Truth::unknown;
       if (within == Truth::no) continue;
       if (within == Truth::yes) return hit(lo, false);
       // The whole step undecided: within h at t = 0 already (balls on the exact start
