@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "tailor/ccd/proximity_conditions.hpp"
+#include "tailor/geometry/coplanarity_sign.hpp"
 
 namespace tailor {
 namespace {
@@ -237,11 +238,50 @@ double fastest_relative(const StepPoints& m, std::initializer_list<std::pair<int
   return v * (1 + 1e-12);
 }
 
+/// The largest length of the moving vector x1 - x0 over the step, squared: it is linear in
+/// t, so its length is largest at an end (rounded up generously: two roundings per
+/// coordinate, far below the factor).
+double longest_squared(const Vec3& from_t0, const Vec3& to_t0, const Vec3& from_t1,
+                       const Vec3& to_t1) {
+  return std::max((to_t0 - from_t0).squaredNorm(), (to_t1 - from_t1).squaredNorm()) * (1 + 1e-12);
+}
+
+/// Whether f(t) = det(b - a, c - a, d - a) of the four moving points (a, b, c, d) keeps one
+/// strict sign with |f(t)| > h · n_bound on the whole step (certified: the Bernstein
+/// coefficients of f with their error bounds, geometry/coplanarity_sign.hpp). f(t) is a
+/// convex combination of its Bernstein coefficients, so |f| is at least the smallest of
+/// them when they share a sign. With n_bound ≥ |n(t)| for the n for which |f| = |n · r|
+/// (r from the first primitive to the second), |f| / |n| is the distance along n, which no
+/// pair of points of the two primitives undercuts: farther than h for the whole step.
+bool certainly_apart(const StepPoints& m, double n_bound_squared, double h) {
+  double value[4], bound[4];
+  if (!detail::coplanarity_bernstein_double(m.x0, m.x1, value, bound)) return false;
+  const double sign = value[0] > 0 ? 1.0 : -1.0;
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 4; ++i) {
+    const double margin = sign * value[i] - bound[i];  // a lower bound of |coefficient|
+    if (!(margin > 0)) return false;
+    smallest = std::min(smallest, (i == 1 || i == 2) ? margin / 3 : margin);
+  }
+  // Rounded down on the left, up on the right; an overflow to infinity on the right only
+  // refuses.
+  return smallest * smallest * (1 - 1e-12) > h * h * n_bound_squared * (1 + 1e-12);
+}
+
 }  // namespace
 
 ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& q, double h) {
   const StepPoints m{{q.p_t0, q.a_t0, q.b_t0, q.c_t0}, {q.p_t1, q.a_t1, q.b_t1, q.c_t1}};
   check_query(m, h, "vertex_face_ccd_within");
+  // p farther than h from the face's plane for the whole step (most candidates): f is
+  // n · (p - a), n = (b - a) × (c - a), |n| ≤ |b - a| |c - a|.
+  const StepPoints face_first{{q.a_t0, q.b_t0, q.c_t0, q.p_t0}, {q.a_t1, q.b_t1, q.c_t1, q.p_t1}};
+  if (certainly_apart(face_first,
+                      longest_squared(q.a_t0, q.b_t0, q.a_t1, q.b_t1) *
+                          longest_squared(q.a_t0, q.c_t0, q.a_t1, q.c_t1),
+                      h)) {
+    return {};
+  }
   const double speed = fastest_relative(m, {{0, 1}, {0, 2}, {0, 3}});
   detail::NeverPresent never;
   never.normal = normal_always_zero(m, {1, 2, 1, 3});
@@ -257,6 +297,14 @@ ThicknessResult edge_edge_ccd_within(const EdgeEdgeQuery& q, double h) {
   const StepPoints m{{q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0},
                      {q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1}};
   check_query(m, h, "edge_edge_ccd_within");
+  // The lines farther than h apart for the whole step: f is ± (c - a) · n, n = (b - a) ×
+  // (d - c), |n| ≤ |b - a| |d - c|.
+  if (certainly_apart(m,
+                      longest_squared(q.ea0_t0, q.ea1_t0, q.ea0_t1, q.ea1_t1) *
+                          longest_squared(q.eb0_t0, q.eb1_t0, q.eb0_t1, q.eb1_t1),
+                      h)) {
+    return {};
+  }
   const double speed = fastest_relative(m, {{0, 2}, {0, 3}, {1, 2}, {1, 3}});
   detail::NeverPresent never;
   never.normal = normal_always_zero(m, {0, 1, 2, 3});

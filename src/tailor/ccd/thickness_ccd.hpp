@@ -4,7 +4,16 @@
 /// edge-edge pair comes within a distance h > 0 (collisions with a thickness; h = 0 is the
 /// exact CCD of ccd.hpp).
 ///
-/// Branch and bound over the step's time. On an interval I of t, every vertex lies in the
+/// First a whole-step test that settles many misses (26-29 % of cloth-ball's thickness
+/// candidates, 34-41 % of cloth-funnel's): the vertex stays farther than h
+/// from the face's plane (or the two edges' lines farther than h apart) for the whole step,
+/// certified from the Bernstein coefficients of the coplanarity cubic f = n · r (with their
+/// error bounds, geometry/coplanarity_sign.hpp) and an upper bound of |n| (the product of
+/// the longest lengths of the two vectors it crosses): |f| / |n| is the distance along n,
+/// which no pair of points of the two primitives undercuts (cloth-funnel's thickness step
+/// 197 -> 165 ms on one thread, cloth-ball's 11.2 -> 10.7 s on two).
+///
+/// Then branch and bound over the step's time. On an interval I of t, every vertex lies in the
 /// box x0 + I (x1 - x0), and the proximity conditions (ccd/proximity_conditions.hpp), the
 /// same polynomials the static predicates decide, are evaluated in ball arithmetic over
 /// those boxes: a rigorous enclosure of each condition over every configuration of I. So
