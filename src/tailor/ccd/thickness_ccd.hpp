@@ -18,7 +18,8 @@
 /// same polynomials the static predicates decide, are evaluated in ball arithmetic over
 /// those boxes: a rigorous enclosure of each condition over every configuration of I. So
 /// "certainly within h" on I means the pair is within h at every t in I, and "certainly
-/// not" means at none. This box test runs on the whole step and on the narrowest
+/// not" means at none. This box test runs on the whole step (when the primitives move less
+/// than h relative to each other: then the boxes are tight) and on the narrowest
 /// intervals; the intervals in between are left to the Lipschitz test below, which clears
 /// more of them for less work (skipping a test can only split an interval again, never
 /// drop a pair, and the narrowest intervals are decided as before: the same pairs and
