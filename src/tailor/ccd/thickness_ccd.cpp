@@ -123,9 +123,7 @@ class EarliestWithin {
   ThicknessResult run() {
     if (speed_ == 0) {  // nothing moves relative to the other primitive: one decision
       result_.intervals = 1;
-      const Truth at_start = conditions_(BoxedStep{m_, Ball(0.0)}, h2_, never_);
-      result_.hit =
-          at_start == Truth::unknown ? exactly_within(0.0, exact_h2_) : at_start == Truth::yes;
+      result_.hit = within_at(0.0, exact_h2_);
       result_.toi = result_.hit ? 0.0 : 1.0;
       return result_;
     }

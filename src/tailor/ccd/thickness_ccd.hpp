@@ -5,33 +5,33 @@
 /// exact CCD of ccd.hpp).
 ///
 /// First a whole-step test that settles many misses (26-29 % of cloth-ball's thickness
-/// candidates, 34-41 % of cloth-funnel's): the vertex stays farther than h
-/// from the face's plane (or the two edges' lines farther than h apart) for the whole step,
-/// certified from the Bernstein coefficients of the coplanarity cubic f = n · r (with their
+/// candidates, 34-41 % of cloth-funnel's): the vertex stays farther than h from the face's
+/// plane (or the two edges' lines farther than h apart) for the whole step, certified from
+/// the Bernstein coefficients of the coplanarity cubic f = n · r (with their
 /// error bounds, geometry/coplanarity_sign.hpp) and an upper bound of |n| (the product of
 /// the longest lengths of the two vectors it crosses): |f| / |n| is the distance along n,
 /// which no pair of points of the two primitives undercuts (cloth-funnel's thickness step
 /// 197 -> 165 ms on one thread, cloth-ball's 11.2 -> 10.7 s on two).
 ///
-/// Then branch and bound over the step's time. On an interval I of t, every vertex lies in the
-/// box x0 + I (x1 - x0), and the proximity conditions (ccd/proximity_conditions.hpp), the
+/// Then branch and bound over the step's time. On an interval I of t, every vertex lies in
+/// the box x0 + I (x1 - x0), and the proximity conditions (ccd/proximity_conditions.hpp), the
 /// same polynomials the static predicates decide, are evaluated in ball arithmetic over
 /// those boxes: a rigorous enclosure of each condition over every configuration of I. So
 /// "certainly within h" on I means the pair is within h at every t in I, and "certainly
-/// not" means at none. This box test runs on the whole step (when the primitives move less
-/// than h relative to each other: then the boxes are tight) and on the narrowest
+/// not" means at none. This box test runs on the whole step (when the primitives move
+/// less than h relative to each other: then the boxes are tight) and on the narrowest
 /// intervals; the intervals in between are left to the Lipschitz test below, which clears
 /// more of them for less work (skipping a test can only split an interval again, never
 /// drop a pair, and the narrowest intervals are decided as before: the same pairs and
-/// times on cloth-ball's thickness step, in two thirds of the time). Intervals are visited earliest
-/// first; an undecided one is split in two until its width w satisfies L w / 2 ≤ 1e-6 h, where L
-/// bounds how fast the distance can change: the largest relative displacement of two corners of the
-/// two primitives (max |Δp - Δa| over the face's corners a; max |Δa - Δc| over an end of each
-/// edge), since any point of one primitive moves relative to any point of the other by a convex
-/// combination of these, and a distance between moving sets changes no faster than its
-/// points' relative speed. An undecided interval wider than that is first tried with the
-/// same bound: farther than h + L w / 2 at its midpoint (balls, then exact), it is clear.
-/// At the narrowest width the midpoint t_m decides, on
+/// times on cloth-ball's thickness step). Intervals are visited earliest first; an
+/// undecided one is split in two until its width w satisfies L w / 2 ≤ 1e-6 h, where L
+/// bounds how fast the distance can change: the largest relative displacement of two
+/// corners of the two primitives (max |Δp - Δa| over the face's corners a; max |Δa - Δc|
+/// over an end of each edge), since any point of one primitive moves relative to any point
+/// of the other by a convex combination of these, and a distance between moving sets
+/// changes no faster than its points' relative speed. An undecided interval wider than
+/// that is first tried with the same bound: farther than h + L w / 2 at its midpoint
+/// (balls, then exact), it is clear. At the narrowest width the midpoint t_m decides, on
 /// the exact positions at t_m (balls around them first, which settle the answer whenever
 /// they decide; exact rationals otherwise): if the pair is within h √(1 + 2e-6) ≤
 /// (1 + 1e-6) h at t_m it is reported, otherwise no t of the interval can be within h.

@@ -67,11 +67,4 @@ FeaturePairs FeatureBoxTrees::overlapping_pairs(const TriangleMesh& mesh) const 
   return pairs;
 }
 
-FeaturePairs overlapping_feature_pairs(const TriangleMesh& mesh,
-                                       const std::vector<Aabb>& vertex_boxes) {
-  FeatureBoxTrees trees;
-  trees.update(mesh, vertex_boxes);
-  return trees.overlapping_pairs(mesh);
-}
-
 }  // namespace tailor

@@ -35,10 +35,6 @@ class FeatureBoxTrees {
   Bvh m_vertices, m_edges, m_faces;
 };
 
-/// The pairs of FeatureBoxTrees::overlapping_pairs, from trees built for this call.
-FeaturePairs overlapping_feature_pairs(const TriangleMesh& mesh,
-                                       const std::vector<Aabb>& vertex_boxes);
-
 /// Whether face `f` of `mesh` holds vertex `v`.
 bool face_holds(const TriangleMesh& mesh, Index f, Index v);
 
