@@ -14,6 +14,7 @@
 
 #include "support/closest_points.hpp"
 #include "support/sanitized.hpp"
+#include "tailor/ccd/separating_axes.hpp"
 #include "tailor/ccd/thickness_ccd.hpp"
 
 namespace tailor {
@@ -150,6 +151,92 @@ TEST(ThicknessCcd, RandomMotionsAgreeWithTheSampledOracle) {
   }
   EXPECT_GT(hits, runs);  // most motions were tested both ways
   EXPECT_EQ(exhausted, 0);
+}
+
+bool vertex_face_apart(const VertexFaceQuery& q, double h) {
+  return apart_along_a_coordinate_axis({q.p_t0, q.a_t0, q.b_t0, q.c_t0},
+                                       {q.p_t1, q.a_t1, q.b_t1, q.c_t1}, PairShape::vertex_face, h);
+}
+
+bool edge_edge_apart(const EdgeEdgeQuery& q, double h) {
+  return apart_along_a_coordinate_axis({q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0},
+                                       {q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1},
+                                       PairShape::edge_edge, h);
+}
+
+TEST(ThicknessCcd, AxisTestKeepsPairsExactlyHApartAndThoseThatCloseIn) {
+  // The triangle exactly h beyond p along x at both ends: within h (distance = h).
+  const double h = 0.1;
+  const Vec3 a(h, -1, -1), b(h, 1, -1), c(h, 0, 1);
+  const VertexFaceQuery level{Vec3::Zero(), a, b, c, Vec3::Zero(), a, b, c};
+  EXPECT_FALSE(vertex_face_apart(level, h));
+  EXPECT_TRUE(vertex_face_apart(level, 0.99 * h));
+  EXPECT_TRUE(vertex_face_ccd_within(level, h).hit);
+  // Far apart at t = 0, through each other at t = 1: no axis holds over the step.
+  const Vec3 shift(2, 0, 0);
+  const VertexFaceQuery closing{Vec3::Zero(), a + shift, b + shift, c + shift,
+                                Vec3::Zero(), a - shift, b - shift, c - shift};
+  EXPECT_FALSE(vertex_face_apart(closing, h));
+  // Edges: cd exactly h above ab along z at t = 1, farther at t = 0.
+  const EdgeEdgeQuery edges{Vec3(-1, 0, 0), Vec3(1, 0, 0), Vec3(0, -1, 1), Vec3(0, 1, 1),
+                            Vec3(-1, 0, 0), Vec3(1, 0, 0), Vec3(0, -1, h), Vec3(0, 1, h)};
+  EXPECT_FALSE(edge_edge_apart(edges, h));
+  EXPECT_TRUE(edge_edge_apart(edges, 0.99 * h));
+}
+
+TEST(ThicknessCcd, AxisTestNeverClaimsAPairTheOracleSeesWithinH) {
+  // Layers sliding together: the second primitive a random gap beyond the first along a
+  // random axis, both carried by one large motion plus a small relative one, so the
+  // swept boxes overlap while an axis often separates the pair. Whenever the test claims
+  // "more than h apart", the sampled distance (an upper bound of the true minimum) must
+  // exceed h; and it must claim it for some pairs, or this test would show nothing.
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> coordinate(-1, 1), gap(0, 0.5), wobble(-0.05, 0.05);
+  std::uniform_int_distribution<int> axis(0, 2);
+  const auto point = [&] { return Vec3(coordinate(rng), coordinate(rng), coordinate(rng)); };
+  const int runs = testing::sanitized() ? 200 : 2000, samples = 2000;
+  int claimed = 0;
+  for (int i = 0; i < runs; ++i) {
+    const int k = axis(rng);
+    FourPoints x0{point(), point(), point(), point()};
+    // Corners 1-3 lie beyond corner 0 along k (a layer above the other); for the edge
+    // pair, corners 2-3 beyond 0-1.
+    for (int j = 1; j < 4; ++j) x0[j][k] = x0[0][k] + gap(rng);
+    x0[1][k] = x0[0][k] + wobble(rng);  // the edge pair's first edge: roughly level
+    const Vec3 carried = 3 * point();
+    FourPoints x1;
+    for (int j = 0; j < 4; ++j) {
+      x1[j] = x0[j] + carried + Vec3(wobble(rng), wobble(rng), wobble(rng));
+    }
+    const auto at = [&](int j, double t) {
+      return testing::wide(Vec3((1 - t) * x0[j] + t * x1[j]));
+    };
+    const Sampled vf = sample(
+        [&](double t) {
+          return testing::point_triangle_distance(at(0, t), at(1, t), at(2, t), at(3, t));
+        },
+        0, samples);
+    const Sampled ee = sample(
+        [&](double t) { return testing::segment_distance(at(0, t), at(1, t), at(2, t), at(3, t)); },
+        0, samples);
+    const VertexFaceQuery vq{x0[0], x0[1], x0[2], x0[3], x1[0], x1[1], x1[2], x1[3]};
+    const EdgeEdgeQuery eq{x0[0], x0[1], x0[2], x0[3], x1[0], x1[1], x1[2], x1[3]};
+    for (const double share : {0.25, 0.5, 0.9, 1.0, 1.1}) {
+      const double hv = static_cast<double>(vf.minimum) * share + 1e-9;
+      const double he = static_cast<double>(ee.minimum) * share + 1e-9;
+      if (vertex_face_apart(vq, hv)) {
+        ++claimed;
+        EXPECT_GT(vf.minimum, hv) << i;
+        EXPECT_FALSE(vertex_face_ccd_within(vq, hv).hit) << i;
+      }
+      if (edge_edge_apart(eq, he)) {
+        ++claimed;
+        EXPECT_GT(ee.minimum, he) << i;
+        EXPECT_FALSE(edge_edge_ccd_within(eq, he).hit) << i;
+      }
+    }
+  }
+  EXPECT_GT(claimed, runs);
 }
 
 }  // namespace

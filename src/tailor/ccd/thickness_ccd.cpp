@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "tailor/ccd/proximity_conditions.hpp"
+#include "tailor/ccd/separating_axes.hpp"
 #include "tailor/geometry/coplanarity_sign.hpp"
 
 namespace tailor {
@@ -108,9 +109,10 @@ void check_query(const StepPoints& m, double h, const char* what) {
 template <class Conditions>
 class EarliestWithin {
  public:
-  EarliestWithin(const StepPoints& m, double h, double speed, const detail::NeverPresent& never,
-                 Conditions conditions)
+  EarliestWithin(const StepPoints& m, PairShape shape, double h, double speed,
+                 const detail::NeverPresent& never, Conditions conditions)
       : m_(m),
+        shape_(shape),
         h_(h),
         speed_(speed),
         never_(never),
@@ -148,7 +150,15 @@ class EarliestWithin {
       if (within == Truth::yes) return hit(lo, false);
       // The whole step undecided: within h at t = 0 already (balls on the exact start
       // positions, exact when they cannot tell) makes the earliest time 0, with no search.
-      if (result_.intervals == 1 && within_at(0.0, exact_h2_)) return hit(0.0, false);
+      if (result_.intervals == 1) {
+        if (within_at(0.0, exact_h2_)) return hit(0.0, false);
+        double from = 0;
+        if (advance(from)) return result_;
+        if (from > 0) {
+          stack[top++] = {from, 1.0};
+          continue;
+        }
+      }
       const double mid = 0.5 * lo + 0.5 * hi;
       if (clear_by_lipschitz(lo, hi, mid, hi - lo <= kExactLipschitzBelow)) continue;
       if (hi - lo <= narrowest_) {
@@ -173,6 +183,38 @@ class EarliestWithin {
   // Undecided intervals try the Lipschitz exclusion in balls; those at most this wide also
   // in exact rationals when the balls cannot decide (slow, and rarely decisive wider).
   static constexpr double kExactLipschitzBelow = 1.0 / 16;
+
+  /// Conservative advancement from t = 0 (ccd/separating_axes.hpp): each call clears
+  /// [t, next] along the closest direction at t. Where it stalls (next - t below the
+  /// narrowest width), the narrowest interval [next, next + w] is decided as in run() (within
+  /// (1 + 1e-6) h at its midpoint: a hit at `next`, every earlier time being clear;
+  /// otherwise clear as a whole, by the Lipschitz bound) and the advance resumes after it.
+  /// Returns true with result_ set when that decides the pair; otherwise `from` is the end
+  /// of the prefix [0, from] proven clear, where the bisection takes over.
+  bool advance(double& from) {
+    double t = 0;
+    for (int step = 0; step < kAdvanceSteps; ++step) {
+      const double next = clear_along_closest_direction(m_.x0, m_.x1, shape_, t, h_);
+      if (next >= 1) return true;         // clear on the whole step: a miss
+      if (next == t && step == 0) break;  // nothing proven (e.g. a degenerate triangle)
+      if (next - t >= narrowest_) {
+        t = next;
+        continue;
+      }
+      const double end = std::min(1.0, next + narrowest_);
+      ++result_.intervals;
+      if (within_at(0.5 * next + 0.5 * end, exact_h2_ * mpq_class(500001, 500000))) {
+        hit(next, false);
+        return true;
+      }
+      if (end >= 1) return true;
+      t = end;
+    }
+    from = t;
+    return false;
+  }
+  /// Most advancement calls before the bisection takes over.
+  static constexpr int kAdvanceSteps = 12;
 
   ThicknessResult hit(double toi, bool exhausted) {
     result_.hit = true, result_.toi = toi, result_.exhausted = exhausted;
@@ -209,6 +251,7 @@ class EarliestWithin {
   }
 
   const StepPoints& m_;
+  PairShape shape_;
   double h_, speed_;
   detail::NeverPresent never_;
   Conditions conditions_;
@@ -219,9 +262,9 @@ class EarliestWithin {
 };
 
 template <class Conditions>
-ThicknessResult earliest_within(const StepPoints& m, double h, double speed,
+ThicknessResult earliest_within(const StepPoints& m, PairShape shape, double h, double speed,
                                 const detail::NeverPresent& never, Conditions&& conditions) {
-  return EarliestWithin<std::decay_t<Conditions>>(m, h, speed, never,
+  return EarliestWithin<std::decay_t<Conditions>>(m, shape, h, speed, never,
                                                   std::forward<Conditions>(conditions))
       .run();
 }
@@ -273,6 +316,7 @@ bool certainly_apart(const StepPoints& m, double n_bound_squared, double h) {
 ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& q, double h) {
   const StepPoints m{{q.p_t0, q.a_t0, q.b_t0, q.c_t0}, {q.p_t1, q.a_t1, q.b_t1, q.c_t1}};
   check_query(m, h, "vertex_face_ccd_within");
+  if (apart_along_a_coordinate_axis(m.x0, m.x1, PairShape::vertex_face, h)) return {};
   // p farther than h from the face's plane for the whole step (most candidates): f is
   // n · (p - a), n = (b - a) × (c - a), |n| ≤ |b - a| |c - a|.
   const StepPoints face_first{{q.a_t0, q.b_t0, q.c_t0, q.p_t0}, {q.a_t1, q.b_t1, q.c_t1, q.p_t1}};
@@ -287,7 +331,7 @@ ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& q, double h) {
   never.normal = normal_always_zero(m, {1, 2, 1, 3});
   never.segment = {always_together(m, 1, 2), always_together(m, 2, 3), always_together(m, 3, 1),
                    false};
-  return earliest_within(m, h, speed, never,
+  return earliest_within(m, PairShape::vertex_face, h, speed, never,
                          [](const auto& pts, const auto& h2, const detail::NeverPresent& n) {
                            return detail::vertex_face(pts, h2, n);
                          });
@@ -297,6 +341,7 @@ ThicknessResult edge_edge_ccd_within(const EdgeEdgeQuery& q, double h) {
   const StepPoints m{{q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0},
                      {q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1}};
   check_query(m, h, "edge_edge_ccd_within");
+  if (apart_along_a_coordinate_axis(m.x0, m.x1, PairShape::edge_edge, h)) return {};
   // The lines farther than h apart for the whole step: f is ± (c - a) · n, n = (b - a) ×
   // (d - c), |n| ≤ |b - a| |d - c|.
   if (certainly_apart(m,
@@ -310,7 +355,7 @@ ThicknessResult edge_edge_ccd_within(const EdgeEdgeQuery& q, double h) {
   never.normal = normal_always_zero(m, {0, 1, 2, 3});
   const bool cd = always_together(m, 2, 3), ab = always_together(m, 0, 1);
   never.segment = {cd, cd, ab, ab};
-  return earliest_within(m, h, speed, never,
+  return earliest_within(m, PairShape::edge_edge, h, speed, never,
                          [](const auto& pts, const auto& h2, const detail::NeverPresent& n) {
                            return detail::edge_edge(pts, h2, n);
                          });

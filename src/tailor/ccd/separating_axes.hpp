@@ -1,0 +1,53 @@
+#pragma once
+/// @file
+/// Certified separation of a moving vertex-face or edge-edge pair by more than a distance
+/// h along one fixed direction, over a whole step or the front of it: the cheap tests that
+/// the minimum-separation CCD (ccd/thickness_ccd.hpp) runs before and inside its search.
+///
+/// Why a direction proves a distance. Let the pair's four points move linearly, and let
+/// d_k(t) be the differences between a corner of the second primitive and a corner of the
+/// first: p's to the face's corners a - p, b - p, c - p (vertex-face, the points in the
+/// order p, a, b, c), or c - a, d - a, c - b, d - b (edges ab and cd). Every vector from a
+/// point of the first primitive to a point of the second is a convex combination of the
+/// d_k(t) (the triangle's barycentric weights; the products (1 - σ)(1 - ρ), ... of the two
+/// segment parameters). So if u · d_k(t) > h |u| for every k, every such vector w has
+/// u · w > h |u|, hence |w| > h: no two points are within h at t. Each d_k(t) =
+/// (1 - t) d_k(0) + t d_k(1) is linear in t, so u · d_k is too, and it exceeds a bound
+/// on a whole interval when it does at both ends.
+///
+/// Certified evaluation: u is any vector of doubles (how it is chosen only decides how
+/// sharp the test is). A difference of two coordinates rounds once and a three-term dot
+/// product three more times, so u · d_k is computed within 5·2^-53 Σ|u_c| (|x_c| + |y_c|)
+/// over the coordinates c of the two points x, y (bounded here by 1e-15 times that sum);
+/// the interpolation in t and |u| get their own generous factors. Overflowing or
+/// non-finite values only refuse (nothing is claimed).
+
+#include "tailor/geometry/types.hpp"
+
+namespace tailor {
+
+/// Which pair the four points of a separation test form.
+enum class PairShape {
+  vertex_face,  ///< points p, a, b, c: vertex p and triangle abc
+  edge_edge,    ///< points a, b, c, d: segments ab and cd
+};
+
+/// Whether one coordinate axis keeps the two primitives more than `h` apart for the whole
+/// step (u = ± a unit axis, so |u| = 1 and only the differences round: the test asks for
+/// more than h / (1 - 2^-52) of the rounded ones). A relative test: two primitives that
+/// move together stay as far apart as they were, however far they move, while the swept
+/// boxes the candidates come from grow with the motion.
+bool apart_along_a_coordinate_axis(const FourPoints& x0, const FourPoints& x1, PairShape shape,
+                                   double h);
+
+/// Conservative advancement along the closest direction: returns t1 ≥ `t` such that no two
+/// points of the pair are within `h` at any time of [t, t1] (t1 = t when nothing is
+/// proven). The direction u is the one between the pair's closest points at `t` (computed
+/// in double: any u is sound); the returned t1 is where the first u · d_k would reach
+/// h |u|, shrunk a little and then certified at both ends as above. A pair approaching
+/// along u is cleared up to just before its first time within h in one call; a pair
+/// whose closest direction turns needs several, from the times returned.
+double clear_along_closest_direction(const FourPoints& x0, const FourPoints& x1, PairShape shape,
+                                     double t, double h);
+
+}  // namespace tailor
