@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -39,15 +40,17 @@ class BoxedStep {
  public:
   BoxedStep(const StepPoints& m, Ball t) {
     for (int i = 1; i < 4; ++i) {
-      for (int j = 0; j < i; ++j) {
-        const auto coordinate = [&](int k) {
-          const Ball start = Ball(m.x0[i][k]) - Ball(m.x0[j][k]);
-          const Ball end = Ball(m.x1[i][k]) - Ball(m.x1[j][k]);
-          return start + t * (end - start);
-        };
-        m_d[i][j] = {coordinate(0), coordinate(1), coordinate(2)};
-      }
+      for (int j = 0; j < i; ++j) m_d[i][j] = difference(m, i, j, t);
     }
+  }
+  /// x_i - x_j over t, formed as above.
+  static V3<Ball> difference(const StepPoints& m, int i, int j, Ball t) {
+    const auto coordinate = [&](int k) {
+      const Ball start = Ball(m.x0[i][k]) - Ball(m.x0[j][k]);
+      const Ball end = Ball(m.x1[i][k]) - Ball(m.x1[j][k]);
+      return start + t * (end - start);
+    };
+    return {coordinate(0), coordinate(1), coordinate(2)};
   }
   V3<Ball> d(int i, int j) const {
     if (i > j) return m_d[i][j];
@@ -76,8 +79,8 @@ detail::PointSet<mpq_class> exact_at(const StepPoints& m, const mpq_class& t) {
 bool normal_always_zero(const StepPoints& m, std::array<int, 4> ends) {
   // Balls first: a component certainly nonzero at one time settles it (the usual case).
   for (const double t : {0.0, 0.5, 1.0}) {
-    const BoxedStep at{m, Ball(t)};
-    const V3<Ball> n = cross(at.d(ends[1], ends[0]), at.d(ends[3], ends[2]));
+    const V3<Ball> n = cross(BoxedStep::difference(m, ends[1], ends[0], Ball(t)),
+                             BoxedStep::difference(m, ends[3], ends[2], Ball(t)));
     if (n.x.nonzero() || n.y.nonzero() || n.z.nonzero()) return false;
   }
   for (const mpq_class& t : {mpq_class(0), mpq_class(1, 2), mpq_class(1)}) {
@@ -104,6 +107,10 @@ void check_query(const StepPoints& m, double h, const char* what) {
   }
 }
 
+/// Which distance a decision at one time is against: h, or h √(1 + 2e-6) ≤ (1 + 1e-6) h
+/// (the narrowest intervals' midpoints).
+enum class Reach { h, widened };
+
 /// The search over [0, 1]; `conditions(points, h2, never)` is the pair's proximity
 /// predicate over any number type, `speed` a bound on how fast its distance changes.
 template <class Conditions>
@@ -118,14 +125,15 @@ class EarliestWithin {
         never_(never),
         conditions_(std::move(conditions)),
         h2_(Ball(h) * Ball(h)),
-        exact_h2_(mpq_class(h) * mpq_class(h)),
+        // 500001 / 500000 rounds to the double 1.000002 within 2^-53 of it.
+        widened_h2_(h2_ * Ball(1.000002, 0x1p-52)),
         // The narrowest interval: L w / 2 ≤ 1e-6 h (with room for rounding), and w ≤ 1e-6.
         narrowest_(std::min(1e-6, 1.9e-6 * h / speed)) {}
 
   ThicknessResult run() {
     if (speed_ == 0) {  // nothing moves relative to the other primitive: one decision
       result_.intervals = 1;
-      result_.hit = within_at(0.0, exact_h2_);
+      result_.hit = within_at(0.0, Reach::h);
       result_.toi = result_.hit ? 0.0 : 1.0;
       return result_;
     }
@@ -151,7 +159,7 @@ class EarliestWithin {
       // The whole step undecided: within h at t = 0 already (balls on the exact start
       // positions, exact when they cannot tell) makes the earliest time 0, with no search.
       if (result_.intervals == 1) {
-        if (within_at(0.0, exact_h2_)) return hit(0.0, false);
+        if (within_at(0.0, Reach::h)) return hit(0.0, false);
         double from = 0;
         if (advance(from)) return result_;
         if (from > 0) {
@@ -163,7 +171,7 @@ class EarliestWithin {
       if (clear_by_lipschitz(lo, hi, mid, hi - lo <= kExactLipschitzBelow)) continue;
       if (hi - lo <= narrowest_) {
         // Narrow enough: within h √(1 + 2e-6) ≤ (1 + 1e-6) h at the midpoint, or clear.
-        if (within_at(mid, exact_h2_ * mpq_class(500001, 500000))) return hit(lo, false);
+        if (within_at(mid, Reach::widened)) return hit(lo, false);
         continue;
       }
       if (result_.intervals >= kMaxThicknessIntervals || mid <= lo || mid >= hi ||
@@ -171,7 +179,7 @@ class EarliestWithin {
         // Not splittable (the cap, the stack, or the doubles' resolution). Within h at its
         // end and at most 1e-6 wide: the first time is in the interval, and reported as
         // its start; otherwise reported there conservatively (exhausted).
-        return hit(lo, hi - lo > 1e-6 || !exactly_within(hi, exact_h2_));
+        return hit(lo, hi - lo > 1e-6 || !exactly_within(hi, exact_h2(Reach::h)));
       }
       stack[top++] = {mid, hi};
       stack[top++] = {lo, mid};
@@ -203,7 +211,7 @@ class EarliestWithin {
       }
       const double end = std::min(1.0, next + narrowest_);
       ++result_.intervals;
-      if (within_at(0.5 * next + 0.5 * end, exact_h2_ * mpq_class(500001, 500000))) {
+      if (within_at(0.5 * next + 0.5 * end, Reach::widened)) {
         hit(next, false);
         return true;
       }
@@ -224,15 +232,21 @@ class EarliestWithin {
   /// Whether the exact positions at the time t are within sqrt(h2): balls around them
   /// first (they enclose the exact positions, so a decided answer is the exact one), exact
   /// rationals when the balls cannot decide.
-  bool within_at(double t, const mpq_class& h2) const {
-    const double value = h2.get_d();  // truncated: within a relative 2^-52 (or 2^-1074)
-    if (std::isfinite(value)) {
-      const Ball ball_h2(value,
-                         std::fabs(value) * 0x1p-50 + std::numeric_limits<double>::denorm_min());
-      const Truth near = conditions_(BoxedStep{m_, Ball(t)}, ball_h2, never_);
-      if (near != Truth::unknown) return near == Truth::yes;
+  bool within_at(double t, Reach reach) const {
+    const Truth near =
+        conditions_(BoxedStep{m_, Ball(t)}, reach == Reach::h ? h2_ : widened_h2_, never_);
+    if (near != Truth::unknown) return near == Truth::yes;
+    return exactly_within(t, exact_h2(reach));
+  }
+
+  /// h² or h² · 500001 / 500000, exact.
+  const mpq_class& exact_h2(Reach reach) const {
+    std::optional<mpq_class>& value = reach == Reach::h ? exact_h2_ : exact_widened_h2_;
+    if (!value) {
+      value = mpq_class(h_) * mpq_class(h_);
+      if (reach == Reach::widened) *value *= mpq_class(500001, 500000);
     }
-    return exactly_within(t, h2);
+    return *value;
   }
 
   /// Whether the exact positions at the time t are within sqrt(h2) (exact).
@@ -255,8 +269,10 @@ class EarliestWithin {
   double h_, speed_;
   detail::NeverPresent never_;
   Conditions conditions_;
-  Ball h2_;
-  mpq_class exact_h2_;
+  Ball h2_, widened_h2_;
+  // Formed on first use: most queries are decided by balls alone, and two rationals cost
+  // more than a ball evaluation of the conditions.
+  mutable std::optional<mpq_class> exact_h2_, exact_widened_h2_;
   double narrowest_;
   ThicknessResult result_;
 };
