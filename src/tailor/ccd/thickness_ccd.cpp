@@ -156,16 +156,18 @@ class EarliestWithin {
                                : Truth::unknown;
       if (within == Truth::no) continue;
       if (within == Truth::yes) return hit(lo, false);
-      // The whole step undecided: within h at t = 0 already (balls on the exact start
-      // positions, exact when they cannot tell) makes the earliest time 0, with no search.
+      // The whole step undecided: the advancement from t = 0 (its first call, cheaper than
+      // the conditions, proves the pair clear at t = 0 whenever it proves anything); if it
+      // proves nothing, within h at t = 0 (balls on the exact start positions, exact when
+      // they cannot tell) makes the earliest time 0, with no search.
       if (result_.intervals == 1) {
-        if (within_at(0.0, Reach::h)) return hit(0.0, false);
         double from = 0;
         if (advance(from)) return result_;
         if (from > 0) {
           stack[top++] = {from, 1.0};
           continue;
         }
+        if (within_at(0.0, Reach::h)) return hit(0.0, false);
       }
       const double mid = 0.5 * lo + 0.5 * hi;
       if (clear_by_lipschitz(lo, hi, mid, hi - lo <= kExactLipschitzBelow)) continue;
