@@ -299,7 +299,8 @@ void bind_detection(py::module_& m) {
       py::arg("threads") = 0,
       "The largest fraction alpha of the step from x0 to x1 that keeps every pair sharing no "
       "vertex farther apart than `thickness` (0: never touching), a certified lower bound "
-      "within 1e-6 (as C++ tailor::collision_free_step): a dict with 'alpha' and the pair that "
+      "(within 1e-6 of it at thickness 0; see C++ tailor::collision_free_step for a pair that "
+      "grazes the thickness): a dict with 'alpha' and the pair that "
       "limits it, 'vertex_face' (vertex, face) or 'edge_edge' (a0, a1, b0, b1), None when "
       "nothing does.");
 

@@ -16,7 +16,10 @@ namespace tailor {
 struct CollisionFreeStep {
   /// The fraction α in [0, 1] of the step: on [0, α) every pair sharing no vertex stays
   /// farther apart than the thickness (with thickness 0: never touches). A certified lower
-  /// bound of the largest such fraction, within 1e-6 of it (1 when nothing comes that close).
+  /// bound of the largest such fraction (1 when nothing comes that close): within 1e-6 of it
+  /// at thickness 0; above 0, within 1e-6 of a time at which the limiting pair is within
+  /// (1 + 1e-6) times the thickness (ccd/thickness_ccd.hpp: a pair that grazes the
+  /// thickness can get a fraction more than 1e-6 short).
   double alpha = 1.0;
   /// The vertex-face pair that limits α, when one does (its toi is α).
   std::optional<VertexFaceCollision> vertex_face;
