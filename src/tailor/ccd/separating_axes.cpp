@@ -10,6 +10,8 @@
 #include <span>
 #include <utility>
 
+#include "tailor/geometry/closest_point.hpp"
+
 namespace tailor {
 namespace {
 
@@ -22,58 +24,6 @@ std::span<const std::pair<int, int>> differences(PairShape shape) {
   return kEndToEnd;
 }
 
-/// The point of triangle abc closest to p (Ericson, Real-Time Collision Detection §5.1.5;
-/// plain double: it only chooses a direction).
-Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return a;
-  const Vec3 bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + d1 / (d1 - d3) * ab;
-  const Vec3 cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + d2 / (d2 - d6) * ac;
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
-    return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
-  }
-  const double scale = 1 / (va + vb + vc);
-  return a + vb * scale * ab + vc * scale * ac;
-}
-
-/// The closest points of segments pq and rs (Ericson §5.1.9), as (on pq, on rs).
-std::pair<Vec3, Vec3> closest_on_segments(const Vec3& p, const Vec3& q, const Vec3& r,
-                                          const Vec3& s) {
-  const Vec3 d1 = q - p, d2 = s - r, w = p - r;
-  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(w);
-  const auto unit = [](double x) { return std::clamp(x, 0.0, 1.0); };
-  double sigma = 0, rho = 0;
-  if (a <= 0 && e <= 0) return {p, r};
-  if (a <= 0) {
-    rho = unit(f / e);
-  } else {
-    const double c = d1.dot(w);
-    if (e <= 0) {
-      sigma = unit(-c / a);
-    } else {
-      const double b = d1.dot(d2), denominator = a * e - b * b;
-      sigma = denominator > 0 ? unit((b * f - c * e) / denominator) : 0.0;
-      rho = (b * sigma + f) / e;
-      if (rho < 0) {
-        rho = 0, sigma = unit(-c / a);
-      } else if (rho > 1) {
-        rho = 1, sigma = unit((b - c) / a);
-      }
-    }
-  }
-  return {p + sigma * d1, r + rho * d2};
-}
-
 /// The positions at t (rounded; they only choose the direction).
 FourPoints positions_at(const FourPoints& x0, const FourPoints& x1, double t) {
   FourPoints x;
@@ -83,9 +33,12 @@ FourPoints positions_at(const FourPoints& x0, const FourPoints& x1, double t) {
 
 /// From the first primitive's closest point to the second's at t.
 Vec3 closest_direction(const FourPoints& x, PairShape shape) {
-  if (shape == PairShape::vertex_face) return closest_on_triangle(x[0], x[1], x[2], x[3]) - x[0];
-  const auto [on_first, on_second] = closest_on_segments(x[0], x[1], x[2], x[3]);
-  return on_second - on_first;
+  if (shape == PairShape::vertex_face) {
+    const Vec3 w = closest_point_barycentric(x[0], x[1], x[2], x[3]);
+    return x[1] + w[1] * (x[2] - x[1]) + w[2] * (x[3] - x[1]) - x[0];
+  }
+  const auto [s, u] = closest_segment_parameters(x[0], x[1], x[2], x[3]);
+  return (x[2] + u * (x[3] - x[2])) - (x[0] + s * (x[1] - x[0]));
 }
 
 /// Lower bounds of u · d_k at t = 0 (`start`) and t = 1 (`end`), one per difference.

@@ -2,7 +2,8 @@
 /// @file
 /// Closest-point queries between a point and a triangle, and between two segments
 /// (Ericson, Real-Time Collision Detection, 2005, §5.1.5 and §5.1.9). Floating point,
-/// for contact response (normals, weights, distances), never for deciding collisions.
+/// for contact response (normals, weights, distances) and for choosing a direction that a
+/// certified test then checks (ccd/separating_axes), never for deciding collisions.
 
 #include <utility>
 
