@@ -239,5 +239,77 @@ TEST(ThicknessCcd, AxisTestNeverClaimsAPairTheOracleSeesWithinH) {
   EXPECT_GT(claimed, runs);
 }
 
+TEST(ThicknessCcd, WitnessClaimsOnlyPairsWithinH) {
+  // Random configurations at three scales: the witness "within h at this instant" may
+  // claim a pair only when the long-double distance is at most h, must claim nearly every
+  // pair 1e-9 relative above its distance, and none 1e-12 below it.
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> coordinate(-1, 1);
+  const int runs = testing::sanitized() ? 300 : 3000;
+  int claimed = 0, tried = 0;
+  for (const double scale : {1.0, 0x1p-200, 0x1p200}) {
+    const auto point = [&] {
+      return Vec3(scale * coordinate(rng), scale * coordinate(rng), scale * coordinate(rng));
+    };
+    for (int i = 0; i < runs; ++i) {
+      const FourPoints x{point(), point(), point(), point()};
+      const auto w = [&](int k) { return testing::wide(x[k]); };
+      for (const PairShape shape : {PairShape::vertex_face, PairShape::edge_edge}) {
+        const long double d = shape == PairShape::vertex_face
+                                  ? testing::point_triangle_distance(w(0), w(1), w(2), w(3))
+                                  : testing::segment_distance(w(0), w(1), w(2), w(3));
+        if (!(d > 0)) continue;
+        const double above = static_cast<double>(d * (1 + 1e-9L));
+        const double below = static_cast<double>(d * (1 - 1e-12L));
+        ++tried;
+        if (within_by_closest_points(x, shape, above)) ++claimed;
+        EXPECT_FALSE(within_by_closest_points(x, shape, below)) << i << " at scale " << scale;
+      }
+    }
+  }
+  EXPECT_GT(claimed, tried * 99 / 100);
+}
+
+TEST(ThicknessCcd, NearlyParallelEdgesAgreeWithTheSampledOracle) {
+  // Two edges at a small angle (1e-7 to 1e-2) a random gap apart, carried by one large
+  // motion and turning a little relative to each other: the lines' distance over |n| is
+  // a ratio of two small numbers here, so a bound of |n| that undercut it would let the
+  // plane test drop pairs within h. h just above the sampled minimum must hit (at or
+  // before the first sampled time within h); h below the minimum must not.
+  std::mt19937_64 rng(37);
+  std::uniform_real_distribution<double> unit(-1, 1), gap(1e-3, 0.2), exponent(-7, -2);
+  const int runs = testing::sanitized() ? 100 : 1000, samples = 4000;
+  int hits = 0;
+  for (int i = 0; i < runs; ++i) {
+    const double angle = std::pow(10.0, exponent(rng)), g = gap(rng);
+    const Vec3 along = Vec3(unit(rng), unit(rng), unit(rng)).normalized();
+    const Vec3 across = along.cross(Vec3(unit(rng), unit(rng), unit(rng))).normalized();
+    const Vec3 side = along.cross(across);
+    const Vec3 turned = (along + angle * side).normalized();
+    const Vec3 offset = 0.3 * unit(rng) * along + g * across;
+    const FourPoints x0{-along, along, offset - turned, offset + turned};
+    const Vec3 carried = 2 * Vec3(unit(rng), unit(rng), unit(rng));
+    const Vec3 twist = 0.5 * g * Vec3(unit(rng), unit(rng), unit(rng));
+    const FourPoints x1{x0[0] + carried, x0[1] + carried, x0[2] + carried - twist,
+                        x0[3] + carried + twist};
+    const auto at = [&](int k, double t) {
+      return testing::wide(Vec3((1 - t) * x0[k] + t * x1[k]));
+    };
+    const auto ee = [&](double t) {
+      return testing::segment_distance(at(0, t), at(1, t), at(2, t), at(3, t));
+    };
+    const EdgeEdgeQuery q{x0[0], x0[1], x0[2], x0[3], x1[0], x1[1], x1[2], x1[3]};
+    const Sampled s0 = sample(ee, 0, samples);
+    const double above = static_cast<double>(s0.minimum * (1 + 1e-3L));
+    const ThicknessResult r = edge_edge_ccd_within(q, above);
+    ASSERT_TRUE(r.hit) << i;
+    EXPECT_LE(r.toi, sample(ee, above, samples).first_within + 1e-12) << i;
+    ++hits;
+    const double under = static_cast<double>(s0.minimum * (1 - 1e-3L));
+    EXPECT_FALSE(edge_edge_ccd_within(q, under).hit) << i;
+  }
+  EXPECT_EQ(hits, runs);
+}
+
 }  // namespace
 }  // namespace tailor

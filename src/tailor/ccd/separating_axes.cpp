@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <span>
 #include <utility>
 
@@ -76,7 +77,30 @@ bool all_beyond(const Projections& p, double t, double reach) {
   return true;
 }
 
+/// The second primitive's point minus the first's, at weights for which the exact points
+/// lie on the primitives (see the header); nullopt when the weights cannot be made so.
+std::optional<Vec3> witness_difference(const FourPoints& x, PairShape shape) {
+  if (shape == PairShape::vertex_face) {
+    const Vec3 w = closest_point_barycentric(x[0], x[1], x[2], x[3]);
+    constexpr double kShrink = 1 - 0x1p-50;
+    const double wb = std::max(0.0, w[1]) * kShrink, wc = std::max(0.0, w[2]) * kShrink;
+    if (!(wb + wc <= 1 - 0x1p-51)) return std::nullopt;
+    return x[1] + wb * (x[2] - x[1]) + wc * (x[3] - x[1]) - x[0];
+  }
+  const auto [s, u] = closest_segment_parameters(x[0], x[1], x[2], x[3]);
+  const double sc = std::clamp(s, 0.0, 1.0), uc = std::clamp(u, 0.0, 1.0);
+  return (x[2] + uc * (x[3] - x[2])) - (x[0] + sc * (x[1] - x[0]));
+}
+
 }  // namespace
+
+bool within_by_closest_points(const FourPoints& x, PairShape shape, double h) {
+  const std::optional<Vec3> d = witness_difference(x, shape);
+  if (!d || !(d->cwiseAbs().maxCoeff() > 1e-140)) return false;  // none, or underflow
+  double size = 0;
+  for (const Vec3& point : x) size += point.cwiseAbs().sum();
+  return d->norm() * (1 + 1e-15) + 4e-15 * size < h;
+}
 
 bool apart_along_a_coordinate_axis(const FourPoints& x0, const FourPoints& x1, PairShape shape,
                                    double h) {

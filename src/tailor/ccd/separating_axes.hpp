@@ -1,8 +1,9 @@
 #pragma once
 /// @file
 /// Certified separation of a moving vertex-face or edge-edge pair by more than a distance
-/// h along one fixed direction, over a whole step or the front of it: the cheap tests that
-/// the minimum-separation CCD (ccd/thickness_ccd.hpp) runs before and inside its search.
+/// h along one fixed direction, over a whole step or the front of it, and a witness of the
+/// opposite (two points within h at one instant): the cheap tests that the
+/// minimum-separation CCD (ccd/thickness_ccd.hpp) runs before and inside its search.
 ///
 /// Why a direction proves a distance. Let the pair's four points move linearly, and let
 /// d_k(t) be the differences between a corner of the second primitive and a corner of the
@@ -49,5 +50,16 @@ bool apart_along_a_coordinate_axis(const FourPoints& x0, const FourPoints& x1, P
 /// whose closest direction turns needs several, from the times returned.
 double clear_along_closest_direction(const FourPoints& x0, const FourPoints& x1, PairShape shape,
                                      double t, double h);
+
+/// Whether two points of the pair in the configuration `x` (exact coordinates, e.g. a
+/// step's start) are certainly within `h`: a witness for "within h" that needs no
+/// rational. The points are the closest points computed in double, taken at weights that
+/// are exactly valid (the segment parameters in [0, 1]; the triangle's two weights scaled
+/// by 1 - 2^-50 and checked to sum to at most 1 - 2^-51, so the exact point with those
+/// weights lies in the triangle). Forming a point from its weights rounds a few times, each
+/// within 2^-53 of the coordinates' sizes, so the computed distance plus 4e-15 times the
+/// sum of all |coordinates| bounds the distance of the two exact points. A difference of
+/// zero, or one too small to square without underflow, refuses.
+bool within_by_closest_points(const FourPoints& x, PairShape shape, double h);
 
 }  // namespace tailor

@@ -112,17 +112,19 @@ void check_query(const StepPoints& m, double h, const char* what) {
 enum class Reach { h, widened };
 
 /// The search over [0, 1]; `conditions(points, h2, never)` is the pair's proximity
-/// predicate over any number type, `speed` a bound on how fast its distance changes.
-template <class Conditions>
+/// predicate over any number type, `speed` a bound on how fast its distance changes, and
+/// `find_never()` the exact degeneracies the conditions drop (found on the first
+/// evaluation: most pairs are decided by the advancement alone).
+template <class Conditions, class FindNever>
 class EarliestWithin {
  public:
-  EarliestWithin(const StepPoints& m, PairShape shape, double h, double speed,
-                 const detail::NeverPresent& never, Conditions conditions)
+  EarliestWithin(const StepPoints& m, PairShape shape, double h, double speed, FindNever find_never,
+                 Conditions conditions)
       : m_(m),
         shape_(shape),
         h_(h),
         speed_(speed),
-        never_(never),
+        find_never_(std::move(find_never)),
         conditions_(std::move(conditions)),
         h2_(Ball(h) * Ball(h)),
         // 500001 / 500000 rounds to the double 1.000002 within 2^-53 of it.
@@ -152,7 +154,7 @@ class EarliestWithin {
       // interval further, never drop a pair.
       const bool whole_or_narrowest = (hi - lo >= 1.0 && speed_ <= h_) || hi - lo <= narrowest_;
       const Truth within = whole_or_narrowest
-                               ? conditions_(BoxedStep{m_, detail::ball_hull(lo, hi)}, h2_, never_)
+                               ? conditions_(BoxedStep{m_, detail::ball_hull(lo, hi)}, h2_, never())
                                : Truth::unknown;
       if (within == Truth::no) continue;
       if (within == Truth::yes) return hit(lo, false);
@@ -223,8 +225,11 @@ class EarliestWithin {
     from = t;
     return false;
   }
-  /// Most advancement calls before the bisection takes over.
-  static constexpr int kAdvanceSteps = 12;
+  /// Most advancement calls before the bisection takes over. A call costs a fraction of
+  /// one interval of the bisection, and pairs that come within h after t = 0 took ~19
+  /// intervals after 12 calls (cloth-ball's thickness step: its search 6.7 → 3.3 s on one
+  /// thread with 200; 1,000 gained nothing more).
+  static constexpr int kAdvanceSteps = 200;
 
   ThicknessResult hit(double toi, bool exhausted) {
     result_.hit = true, result_.toi = toi, result_.exhausted = exhausted;
@@ -236,7 +241,7 @@ class EarliestWithin {
   /// rationals when the balls cannot decide.
   bool within_at(double t, Reach reach) const {
     const Truth near =
-        conditions_(BoxedStep{m_, Ball(t)}, reach == Reach::h ? h2_ : widened_h2_, never_);
+        conditions_(BoxedStep{m_, Ball(t)}, reach == Reach::h ? h2_ : widened_h2_, never());
     if (near != Truth::unknown) return near == Truth::yes;
     return exactly_within(t, exact_h2(reach));
   }
@@ -253,7 +258,7 @@ class EarliestWithin {
 
   /// Whether the exact positions at the time t are within sqrt(h2) (exact).
   bool exactly_within(double t, const mpq_class& h2) const {
-    return conditions_(exact_at(m_, mpq_class(t)), h2, never_) == Truth::yes;
+    return conditions_(exact_at(m_, mpq_class(t)), h2, never()) == Truth::yes;
   }
 
   /// Farther than h + L w / 2 at the midpoint: no time of the interval comes within h.
@@ -261,15 +266,21 @@ class EarliestWithin {
   bool clear_by_lipschitz(double lo, double hi, double mid, bool exact) const {
     const double reach = (h_ + speed_ * (0.5 * (hi - lo))) * (1 + 1e-15);  // rounded up
     const Truth at_mid =
-        conditions_(BoxedStep{m_, Ball(mid)}, Ball(Ball(reach) * Ball(reach)), never_);
+        conditions_(BoxedStep{m_, Ball(mid)}, Ball(Ball(reach) * Ball(reach)), never());
     if (at_mid != Truth::unknown || !exact) return at_mid == Truth::no;
     return !exactly_within(mid, mpq_class(reach) * mpq_class(reach));
+  }
+
+  const detail::NeverPresent& never() const {
+    if (!never_) never_ = find_never_();
+    return *never_;
   }
 
   const StepPoints& m_;
   PairShape shape_;
   double h_, speed_;
-  detail::NeverPresent never_;
+  FindNever find_never_;
+  mutable std::optional<detail::NeverPresent> never_;
   Conditions conditions_;
   Ball h2_, widened_h2_;
   // Formed on first use: most queries are decided by balls alone, and two rationals cost
@@ -279,11 +290,12 @@ class EarliestWithin {
   ThicknessResult result_;
 };
 
-template <class Conditions>
+template <class Conditions, class FindNever>
 ThicknessResult earliest_within(const StepPoints& m, PairShape shape, double h, double speed,
-                                const detail::NeverPresent& never, Conditions&& conditions) {
-  return EarliestWithin<std::decay_t<Conditions>>(m, shape, h, speed, never,
-                                                  std::forward<Conditions>(conditions))
+                                FindNever&& find_never, Conditions&& conditions) {
+  return EarliestWithin<std::decay_t<Conditions>, std::decay_t<FindNever>>(
+             m, shape, h, speed, std::forward<FindNever>(find_never),
+             std::forward<Conditions>(conditions))
       .run();
 }
 
@@ -299,12 +311,24 @@ double fastest_relative(const StepPoints& m, std::initializer_list<std::pair<int
   return v * (1 + 1e-12);
 }
 
-/// The largest length of the moving vector x1 - x0 over the step, squared: it is linear in
-/// t, so its length is largest at an end (rounded up generously: two roundings per
-/// coordinate, far below the factor).
-double longest_squared(const Vec3& from_t0, const Vec3& to_t0, const Vec3& from_t1,
-                       const Vec3& to_t1) {
-  return std::max((to_t0 - from_t0).squaredNorm(), (to_t1 - from_t1).squaredNorm()) * (1 + 1e-12);
+/// An upper bound of |n(t)|² over the step for n(t) = e(t) × g(t), the cross product of two
+/// vectors between the pair's points, each linear in t (e = x_j - x_i, g = x_l - x_k).
+/// n is a quadratic whose Bernstein coefficients are e(0) × g(0), (e(0) × g(1) + e(1) ×
+/// g(0)) / 2 and e(1) × g(1); n(t) is a convex combination of them, so |n(t)| is at most
+/// the largest of their lengths. Computed in double, each is within a few ulps of |e| |g|
+/// of the exact one (the differences and the cross products round a few times), so the
+/// bound adds 1e-14 |e|max |g|max, and never exceeds |e|max |g|max, which bounds |n| too.
+double normal_bound_squared(const StepPoints& m, std::array<int, 4> ends) {
+  const auto [i, j, k, l] = ends;
+  const Vec3 e0 = m.x0[j] - m.x0[i], e1 = m.x1[j] - m.x1[i];
+  const Vec3 g0 = m.x0[l] - m.x0[k], g1 = m.x1[l] - m.x1[k];
+  const double lengths = std::sqrt(std::max(e0.squaredNorm(), e1.squaredNorm()) *
+                                   std::max(g0.squaredNorm(), g1.squaredNorm())) *
+                         (1 + 1e-12);
+  const double middle = (0.5 * (e0.cross(g1) + e1.cross(g0))).norm();
+  const double largest = std::max({e0.cross(g0).norm(), middle, e1.cross(g1).norm()}) * (1 + 1e-12);
+  const double bound = std::min(lengths, largest + 1e-14 * lengths);
+  return bound * bound * (1 + 1e-12);
 }
 
 /// Whether f(t) = det(b - a, c - a, d - a) of the four moving points (a, b, c, d) keeps one
@@ -329,6 +353,13 @@ bool certainly_apart(const StepPoints& m, double n_bound_squared, double h) {
   return smallest * smallest * (1 - 1e-12) > h * h * n_bound_squared * (1 + 1e-12);
 }
 
+/// The result for a pair already within h at t = 0.
+ThicknessResult within_at_start() {
+  ThicknessResult result;
+  result.hit = true, result.toi = 0, result.intervals = 1;
+  return result;
+}
+
 }  // namespace
 
 ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& q, double h) {
@@ -336,20 +367,21 @@ ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& q, double h) {
   check_query(m, h, "vertex_face_ccd_within");
   if (apart_along_a_coordinate_axis(m.x0, m.x1, PairShape::vertex_face, h)) return {};
   // p farther than h from the face's plane for the whole step (most candidates): f is
-  // n · (p - a), n = (b - a) × (c - a), |n| ≤ |b - a| |c - a|.
+  // n · (p - a), n = (b - a) × (c - a).
   const StepPoints face_first{{q.a_t0, q.b_t0, q.c_t0, q.p_t0}, {q.a_t1, q.b_t1, q.c_t1, q.p_t1}};
-  if (certainly_apart(face_first,
-                      longest_squared(q.a_t0, q.b_t0, q.a_t1, q.b_t1) *
-                          longest_squared(q.a_t0, q.c_t0, q.a_t1, q.c_t1),
-                      h)) {
+  if (certainly_apart(face_first, normal_bound_squared(m, {1, 2, 1, 3}), h)) {
     return {};
   }
+  if (within_by_closest_points(m.x0, PairShape::vertex_face, h)) return within_at_start();
   const double speed = fastest_relative(m, {{0, 1}, {0, 2}, {0, 3}});
-  detail::NeverPresent never;
-  never.normal = normal_always_zero(m, {1, 2, 1, 3});
-  never.segment = {always_together(m, 1, 2), always_together(m, 2, 3), always_together(m, 3, 1),
-                   false};
-  return earliest_within(m, PairShape::vertex_face, h, speed, never,
+  const auto find_never = [&m] {
+    detail::NeverPresent never;
+    never.normal = normal_always_zero(m, {1, 2, 1, 3});
+    never.segment = {always_together(m, 1, 2), always_together(m, 2, 3), always_together(m, 3, 1),
+                     false};
+    return never;
+  };
+  return earliest_within(m, PairShape::vertex_face, h, speed, find_never,
                          [](const auto& pts, const auto& h2, const detail::NeverPresent& n) {
                            return detail::vertex_face(pts, h2, n);
                          });
@@ -361,19 +393,20 @@ ThicknessResult edge_edge_ccd_within(const EdgeEdgeQuery& q, double h) {
   check_query(m, h, "edge_edge_ccd_within");
   if (apart_along_a_coordinate_axis(m.x0, m.x1, PairShape::edge_edge, h)) return {};
   // The lines farther than h apart for the whole step: f is ± (c - a) · n, n = (b - a) ×
-  // (d - c), |n| ≤ |b - a| |d - c|.
-  if (certainly_apart(m,
-                      longest_squared(q.ea0_t0, q.ea1_t0, q.ea0_t1, q.ea1_t1) *
-                          longest_squared(q.eb0_t0, q.eb1_t0, q.eb0_t1, q.eb1_t1),
-                      h)) {
+  // (d - c).
+  if (certainly_apart(m, normal_bound_squared(m, {0, 1, 2, 3}), h)) {
     return {};
   }
+  if (within_by_closest_points(m.x0, PairShape::edge_edge, h)) return within_at_start();
   const double speed = fastest_relative(m, {{0, 2}, {0, 3}, {1, 2}, {1, 3}});
-  detail::NeverPresent never;
-  never.normal = normal_always_zero(m, {0, 1, 2, 3});
-  const bool cd = always_together(m, 2, 3), ab = always_together(m, 0, 1);
-  never.segment = {cd, cd, ab, ab};
-  return earliest_within(m, PairShape::edge_edge, h, speed, never,
+  const auto find_never = [&m] {
+    detail::NeverPresent never;
+    never.normal = normal_always_zero(m, {0, 1, 2, 3});
+    const bool cd = always_together(m, 2, 3), ab = always_together(m, 0, 1);
+    never.segment = {cd, cd, ab, ab};
+    return never;
+  };
+  return earliest_within(m, PairShape::edge_edge, h, speed, find_never,
                          [](const auto& pts, const auto& h2, const detail::NeverPresent& n) {
                            return detail::edge_edge(pts, h2, n);
                          });
