@@ -144,7 +144,7 @@ void refit(benchmark::State& state, RefitKind kind) {
         bvh.refit(s.x0, s.x1, kind == RefitKind::boxes_and_directions);
       }
     });
-    benchmark::DoNotOptimize(bvh.box(0));
+    benchmark::DoNotOptimize(bvh.start_box(0));
     benchmark::DoNotOptimize(bvh.direction_mask(0));
   }
   state.counters["triangles"] = s.mesh->num_faces();

@@ -1,5 +1,5 @@
-// Batch bounds: every lane's bounds hold its six corners and equal the rounding of
-// float_box.hpp (within 3 float ulps), beyond the float range they clamp and keep every
+// Batch bounds: every lane's bounds hold its three corners at each end of the step and equal the
+// rounding of float_box.hpp (within 3 float ulps), beyond the float range they clamp and keep every
 // overlap, padding lanes change nothing, and the two-, four- and eight-lane paths agree.
 
 #include <gtest/gtest.h>
@@ -43,16 +43,21 @@ TEST(BatchBounds, HoldEveryCornerAndRoundLikeFloatBoxes) {
     const double scale = std::ldexp(1.0, (trial % 27) * 10 - 140);
     const int count = count_of(rng);
     const MovingTriangleBatch batch = random_batch(rng, count, scale, corners);
-    BatchBounds bounds;
-    batch_bounds(batch, bounds);
-    for (int i = 0; i < count; ++i) {
-      for (int k = 0; k < 3; ++k) {
-        double lo = corners[i][0][k], hi = lo;
-        for (const Vec3& p : corners[i]) lo = std::min(lo, p[k]), hi = std::max(hi, p[k]);
-        ASSERT_LE(bounds.low[k][i], lo) << "trial " << trial << " lane " << i;
-        ASSERT_GE(bounds.high[k][i], hi) << "trial " << trial << " lane " << i;
-        ASSERT_EQ(bounds.low[k][i], float_at_most(lo)) << "trial " << trial;
-        ASSERT_EQ(bounds.high[k][i], float_at_least(hi)) << "trial " << trial;
+    BatchBounds frames[2];
+    batch_bounds(batch, frames[0], frames[1]);
+    for (int frame = 0; frame < 2; ++frame) {
+      const BatchBounds& bounds = frames[frame];
+      for (int i = 0; i < count; ++i) {
+        for (int k = 0; k < 3; ++k) {
+          double lo = corners[i][3 * frame][k], hi = lo;
+          for (int corner = 3 * frame; corner < 3 * frame + 3; ++corner) {
+            lo = std::min(lo, corners[i][corner][k]), hi = std::max(hi, corners[i][corner][k]);
+          }
+          ASSERT_LE(bounds.low[k][i], lo) << "trial " << trial << " lane " << i;
+          ASSERT_GE(bounds.high[k][i], hi) << "trial " << trial << " lane " << i;
+          ASSERT_EQ(bounds.low[k][i], float_at_most(lo)) << "trial " << trial;
+          ASSERT_EQ(bounds.high[k][i], float_at_least(hi)) << "trial " << trial;
+        }
       }
     }
   }
@@ -60,15 +65,21 @@ TEST(BatchBounds, HoldEveryCornerAndRoundLikeFloatBoxes) {
 
 TEST(BatchBounds, BeyondTheFloatRangeClampAndKeepOverlaps) {
   // One triangle far beyond the float range, one reaching from the origin to it: their
-  // bounds clamp to the largest float on that side, so the boxes still overlap.
+  // bounds clamp to the largest float on that side, so the boxes still overlap (at both
+  // ends of the step: they do not move).
   const Vec3 far(1e300, -1e300, 0), near = far;
   const Vec3 a(0, 0, 0), b(1, 0, 0);
   MovingTriangleBatch batch;
   batch.add(far.data(), far.data(), far.data(), far.data(), far.data(), far.data());
   batch.add(a.data(), b.data(), near.data(), a.data(), b.data(), near.data());
   batch.pad();
-  BatchBounds bounds;
-  batch_bounds(batch, bounds);
+  BatchBounds start, end;
+  batch_bounds(batch, start, end);
+  for (int k = 0; k < 3; ++k) {
+    ASSERT_EQ(start.low[k][0], end.low[k][0]);
+    ASSERT_EQ(start.high[k][1], end.high[k][1]);
+  }
+  const BatchBounds& bounds = start;
   EXPECT_EQ(bounds.low[0][0], kFloatMax);
   EXPECT_EQ(bounds.high[0][0], kFloatMax);
   EXPECT_EQ(bounds.high[0][1], kFloatMax);
@@ -88,17 +99,19 @@ TEST(BatchBounds, TwoFourAndEightLanePathsAgree) {
     const int count = count_of(rng);
     const MovingTriangleBatch batch =
         random_batch(rng, count, std::ldexp(1.0, (trial % 60) * 20 - 600), corners);
-    BatchBounds two, four, eight_lanes;
-    detail::batch_bounds_two_lanes(batch, two);
-    detail::batch_bounds_four_lanes(batch, four);
-    if (eight) detail::batch_bounds_eight_lanes(batch, eight_lanes);
-    for (int k = 0; k < 3; ++k) {
-      for (int i = 0; i < batch.padded_count(); ++i) {
-        ASSERT_EQ(two.low[k][i], four.low[k][i]) << "trial " << trial;
-        ASSERT_EQ(two.high[k][i], four.high[k][i]) << "trial " << trial;
-        if (!eight) continue;
-        ASSERT_EQ(two.low[k][i], eight_lanes.low[k][i]) << "trial " << trial;
-        ASSERT_EQ(two.high[k][i], eight_lanes.high[k][i]) << "trial " << trial;
+    BatchBounds two[2], four[2], eight_lanes[2];
+    detail::batch_bounds_two_lanes(batch, two[0], two[1]);
+    detail::batch_bounds_four_lanes(batch, four[0], four[1]);
+    if (eight) detail::batch_bounds_eight_lanes(batch, eight_lanes[0], eight_lanes[1]);
+    for (int frame = 0; frame < 2; ++frame) {
+      for (int k = 0; k < 3; ++k) {
+        for (int i = 0; i < batch.padded_count(); ++i) {
+          ASSERT_EQ(two[frame].low[k][i], four[frame].low[k][i]) << "trial " << trial;
+          ASSERT_EQ(two[frame].high[k][i], four[frame].high[k][i]) << "trial " << trial;
+          if (!eight) continue;
+          ASSERT_EQ(two[frame].low[k][i], eight_lanes[frame].low[k][i]) << "trial " << trial;
+          ASSERT_EQ(two[frame].high[k][i], eight_lanes[frame].high[k][i]) << "trial " << trial;
+        }
       }
     }
   }

@@ -173,7 +173,7 @@ TEST(MeshBvh, OneAndTwoFaceMeshesRefit) {
     bvh.refit(x0, x1, true);
     ASSERT_EQ(bvh.num_nodes(), 2 * faces - 1);
     for (Index v = 0; v < (faces == 1 ? 3 : 4); ++v) {
-      EXPECT_TRUE(box_holds(bvh.box(0), x0, v) && box_holds(bvh.box(0), x1, v)) << faces;
+      EXPECT_TRUE(box_holds(bvh.start_box(0), x0, v) && box_holds(bvh.end_box(0), x1, v)) << faces;
     }
     EXPECT_TRUE(bvh.direction_mask(0) >> 4 & 1) << faces;  // both face +z
   }
@@ -193,8 +193,8 @@ TEST(MeshBvh, RefitBoxesHoldTheSweptTrianglesAndMasksHoldEveryNormal) {
       for (Index f : faces) {
         for (int k = 0; k < 3; ++k) {
           const Index v = mesh.faces()(f, k);
-          ASSERT_TRUE(box_holds(bvh.box(node), c.mesh.vertices, v) &&
-                      box_holds(bvh.box(node), c.x1, v))
+          ASSERT_TRUE(box_holds(bvh.start_box(node), c.mesh.vertices, v) &&
+                      box_holds(bvh.end_box(node), c.x1, v))
               << c.name << " node " << node << " face " << f;
         }
       }
@@ -242,24 +242,28 @@ TEST(MeshBvh, DirectionsAloneGiveTheSameMasksAndLeaveTheBoxes) {
     directions.refit(shifted, shifted, false);
     std::vector<FloatBox> before;
     for (Index node = 0; node < directions.num_nodes(); ++node) {
-      before.push_back(directions.box(node));
+      before.push_back(directions.start_box(node));
+      before.push_back(directions.end_box(node));
     }
     directions.refit_directions(c.mesh.vertices, c.x1);
     EXPECT_FALSE(directions.boxes_current()) << c.name;
     for (Index node = 0; node < full.num_nodes(); ++node) {
       ASSERT_EQ(directions.direction_mask(node), full.direction_mask(node))
           << c.name << " node " << node;
-      ASSERT_EQ(directions.box(node).min, before[static_cast<std::size_t>(node)].min)
-          << c.name << " node " << node;
-      ASSERT_EQ(directions.box(node).max, before[static_cast<std::size_t>(node)].max)
-          << c.name << " node " << node;
+      const std::size_t i = 2 * static_cast<std::size_t>(node);
+      ASSERT_EQ(directions.start_box(node).min, before[i].min) << c.name << " node " << node;
+      ASSERT_EQ(directions.start_box(node).max, before[i].max) << c.name << " node " << node;
+      ASSERT_EQ(directions.end_box(node).min, before[i + 1].min) << c.name << " node " << node;
+      ASSERT_EQ(directions.end_box(node).max, before[i + 1].max) << c.name << " node " << node;
     }
     // Boxes alone then complete the step, and keep the masks.
     directions.refit(c.mesh.vertices, c.x1, false);
     EXPECT_TRUE(directions.boxes_current()) << c.name;
     for (Index node = 0; node < full.num_nodes(); ++node) {
-      ASSERT_EQ(directions.box(node).min, full.box(node).min) << c.name << " node " << node;
-      ASSERT_EQ(directions.box(node).max, full.box(node).max) << c.name << " node " << node;
+      ASSERT_EQ(directions.start_box(node).min, full.start_box(node).min) << c.name;
+      ASSERT_EQ(directions.start_box(node).max, full.start_box(node).max) << c.name;
+      ASSERT_EQ(directions.end_box(node).min, full.end_box(node).min) << c.name;
+      ASSERT_EQ(directions.end_box(node).max, full.end_box(node).max) << c.name;
       ASSERT_EQ(directions.direction_mask(node), full.direction_mask(node))
           << c.name << " node " << node;
     }
@@ -267,34 +271,39 @@ TEST(MeshBvh, DirectionsAloneGiveTheSameMasksAndLeaveTheBoxes) {
 }
 
 TEST(MeshBvh, RefitBoxesAreTheTightestFloatBoxes) {
-  // A leaf's box is its face's swept box rounded outward by float_at_most/at_least, and an
-  // inner node's is the union of its children's, exactly: this catches a refit that pairs
-  // a node with the wrong children or the wrong leaf, which the containment check above
-  // would let through whenever the wrong box happens to be larger.
+  // A leaf's box at each end of the step is its face's box in that frame rounded outward by
+  // float_at_most/at_least, and an inner node's is the union of its children's, exactly:
+  // this catches a refit that pairs a node with the wrong children, the wrong leaf or the
+  // wrong frame, which the containment check above would let through whenever the wrong
+  // box happens to be larger.
   for (const BvhCase& c : bvh_cases()) {
     const TriangleMesh mesh(static_cast<Index>(c.mesh.vertices.rows()), c.mesh.faces);
     MeshBvh bvh(mesh, c.mesh.vertices);
     for (const bool with_directions : {false, true}) {
       bvh.refit(c.mesh.vertices, c.x1, with_directions);
-      for (Index node = 0; node < bvh.num_nodes(); ++node) {
-        FloatBox expected;
-        if (bvh.is_leaf(node)) {
-          for (int k = 0; k < 3; ++k) {
-            double low = std::numeric_limits<double>::infinity(), high = -low;
-            for (const Positions* x : {&c.mesh.vertices, &c.x1}) {
+      for (const bool at_end : {false, true}) {
+        const Positions& x = at_end ? c.x1 : c.mesh.vertices;
+        const auto box = [&](Index node) {
+          return at_end ? bvh.end_box(node) : bvh.start_box(node);
+        };
+        for (Index node = 0; node < bvh.num_nodes(); ++node) {
+          FloatBox expected;
+          if (bvh.is_leaf(node)) {
+            for (int k = 0; k < 3; ++k) {
+              double low = std::numeric_limits<double>::infinity(), high = -low;
               for (int corner = 0; corner < 3; ++corner) {
-                const double value = (*x)(mesh.faces()(bvh.leaf_face(node), corner), k);
+                const double value = x(mesh.faces()(bvh.leaf_face(node), corner), k);
                 low = std::min(low, value), high = std::max(high, value);
               }
+              expected.min[k] = float_at_most(low), expected.max[k] = float_at_least(high);
             }
-            expected.min[k] = float_at_most(low), expected.max[k] = float_at_least(high);
+          } else {
+            expected = box(bvh.left(node));
+            expected.extend(box(bvh.right(node)));
           }
-        } else {
-          expected = bvh.box(bvh.left(node));
-          expected.extend(bvh.box(bvh.right(node)));
+          ASSERT_EQ(box(node).min, expected.min) << c.name << " node " << node << " " << at_end;
+          ASSERT_EQ(box(node).max, expected.max) << c.name << " node " << node << " " << at_end;
         }
-        ASSERT_EQ(bvh.box(node).min, expected.min) << c.name << " node " << node;
-        ASSERT_EQ(bvh.box(node).max, expected.max) << c.name << " node " << node;
       }
     }
   }

@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <cstddef>
 #include <algorithm>
 #include <numeric>
 
@@ -200,7 +201,7 @@ void MeshBvh::refit_groups(Index first, Index end, Index faces, const Positions&
   // The corners of the groups' faces in structure-of-arrays form (leaves in increasing id
   // order), from which the boxes and the masks are computed in vectorisable loops.
   MovingTriangleBatch batch;
-  // The node records of the groups kPrefetchGroups ahead, which will be written: 64 bytes
+  // The node records of the groups kPrefetchGroups ahead, which will be written: 128 bytes
   // per face, not in cache. (Their face counts from m_groups: reading a root record would
   // wait for memory.)
   const Index prefetch_groups_end = parts.boxes ? std::min(end + kPrefetchGroups, groups) : 0;
@@ -224,20 +225,25 @@ void MeshBvh::refit_groups(Index first, Index end, Index faces, const Positions&
                std::span(m_leaf_vertices)
                    .subspan(static_cast<std::size_t>(first_leaf), static_cast<std::size_t>(faces)),
                batch);
-  // Leaf boxes: per coordinate and lane, the six corners' extremes, rounded outward.
-  BatchBounds bounds;
-  if (parts.boxes) batch_bounds(batch, bounds);
+  // Leaf boxes: per frame, coordinate and lane, the three corners' extremes, rounded
+  // outward.
+  BatchBounds start, end_bounds;
+  if (parts.boxes) batch_bounds(batch, start, end_bounds);
   LaneMasks masks;
   if (parts.directions) lane_masks(batch, masks);
   // Each group's nodes are the id range [root, root + 2·count - 1) (pre-order): its leaves
   // in increasing id order are consecutive lanes of the batch.
-  static_assert(sizeof(Node) >= 32, "write_group_boxes() writes 32 bytes of each record");
+  static_assert(offsetof(Node, right_or_face) == sizeof(FloatBox) && offsetof(Node, end) == 32 &&
+                    sizeof(Node) == 64,
+                "write_group_boxes() writes 32 bytes from each box");
   int lane = 0;
   for (Index g = first; g < end; ++g) {
     const Group& group = m_groups[g];
     const int count = static_cast<int>(group_faces(g));
     if (parts.boxes) {
-      write_group_boxes(bounds, lane, group.leaf_bits, count, &m_nodes[group.root].box,
+      write_group_boxes(start, lane, group.leaf_bits, count, &m_nodes[group.root].start,
+                        sizeof(Node));
+      write_group_boxes(end_bounds, lane, group.leaf_bits, count, &m_nodes[group.root].end,
                         sizeof(Node));
     }
     if (parts.directions) m_masks[group.mask_slot] = and_of_masks(masks, lane, lane + count);
@@ -250,12 +256,16 @@ void MeshBvh::join_children(Index node) {
   // time, and a wider load of it would wait for those stores (a failed store-to-load
   // forward).
   Node& record = m_nodes[node];
-  const FloatBox& a = m_nodes[node + 1].box;
-  const FloatBox& b = m_nodes[record.right_or_face].box;
-  for (int k = 0; k < 3; ++k) {
-    record.box.min[k] = b.min[k] < a.min[k] ? b.min[k] : a.min[k];
-    record.box.max[k] = b.max[k] > a.max[k] ? b.max[k] : a.max[k];
-  }
+  const Node& left = m_nodes[node + 1];
+  const Node& right = m_nodes[record.right_or_face];
+  const auto join = [](FloatBox& box, const FloatBox& a, const FloatBox& b) {
+    for (int k = 0; k < 3; ++k) {
+      box.min[k] = b.min[k] < a.min[k] ? b.min[k] : a.min[k];
+      box.max[k] = b.max[k] > a.max[k] ? b.max[k] : a.max[k];
+    }
+  };
+  join(record.start, left.start, right.start);
+  join(record.end, left.end, right.end);
 }
 
 void MeshBvh::merge(const Merge& merge, RefitParts parts) {

@@ -1,7 +1,8 @@
 #pragma once
 /// @file
-/// The BVH of a deforming triangle mesh: swept face boxes (float, rounded outward) and
-/// continuous normal bounds (direction masks), in flat arrays refitted in one pass.
+/// The BVH of a deforming triangle mesh: face boxes at both ends of a step (float, rounded
+/// outward) and continuous normal bounds (direction masks), in flat arrays refitted in one
+/// pass.
 
 #include <array>
 #include <bit>
@@ -12,18 +13,21 @@
 #include "tailor/bvh/bvh_layout.hpp"
 #include "tailor/bvh/direction_mask.hpp"
 #include "tailor/bvh/float_box.hpp"
+#include "tailor/bvh/step_boxes.hpp"
 #include "tailor/mesh/triangle_mesh.hpp"
 
 namespace tailor {
 
 /// A BVH over a subset of the faces of a mesh (all of them by default), built once on
 /// one frame (build_surface_layout: nodes are connected patches where possible, so that
-/// normal bounds can certify them) and refitted every step with swept boxes (box of x0
-/// and x1) and direction masks merged upward.
+/// normal bounds can certify them) and refitted every step with two boxes per node (of its
+/// faces at x0 and at x1: two nodes may meet only if may_meet_over_step(), step_boxes.hpp)
+/// and direction masks merged upward.
 ///
 /// Layout (BvhLayout): pre-order, the left child of inner node i is i + 1. Each node is
-/// one 32-byte record (box, right child or face, face count), 64 bytes per face, plus the
-/// corners of each face in leaf order (12 bytes) so the refit reads them in sequence.
+/// one 64-byte record, a cache line (box at t = 0, right child or face, face count, box at
+/// t = 1), 128 bytes per face, plus the corners of each face in leaf order (12 bytes) so
+/// the refit reads them in sequence.
 ///
 /// Refit in two kinds of work. A *group* is a maximal subtree of fewer than kGroupFaces
 /// faces: its faces' corners are read once into a MovingTriangleBatch (shared by
@@ -63,8 +67,17 @@ class MeshBvh {
   Index size(Index node) const { return m_nodes[node].count; }
   /// Mesh face id of a leaf.
   Index leaf_face(Index node) const { return m_nodes[node].right_or_face; }
-  /// Swept box of a node (valid after refit).
-  const FloatBox& box(Index node) const { return m_nodes[node].box; }
+  /// Box of a node's faces at the step's start, x0 (valid after refit).
+  const FloatBox& start_box(Index node) const { return m_nodes[node].start; }
+  /// Box of a node's faces at the step's end, x1 (valid after refit).
+  const FloatBox& end_box(Index node) const { return m_nodes[node].end; }
+  /// Whether faces of `node` and faces of `other`'s node `other_node` may meet during the
+  /// refitted step (may_meet_over_step() of their boxes).
+  bool may_meet(Index node, const MeshBvh& other, Index other_node) const {
+    const Node& a = m_nodes[node];
+    const Node& b = other.m_nodes[other_node];
+    return may_meet_over_step(a.start, a.end, b.start, b.end);
+  }
   /// Directions within 90° of every normal below the node over the step (valid after a
   /// refit with directions); 0 for the nodes inside a group, which keep no mask.
   DirectionMask direction_mask(Index node) const {
@@ -112,11 +125,14 @@ class MeshBvh {
   static_assert(2 * kGroupFaces - 3 <= 32);
 
   // Aligned to its size, so that no record straddles two cache lines (malloc aligns large
-  // arrays to 16 bytes only: then every other record did).
-  struct alignas(32) Node {
-    FloatBox box;
+  // arrays to 16 bytes only). Each box is followed by eight bytes that write_group_boxes()
+  // may rewrite with their own value.
+  struct alignas(64) Node {
+    FloatBox start;
     Index right_or_face = -1;
     Index count = 0;
+    FloatBox end;
+    std::uint64_t unused = 0;
   };
   struct Group {
     Index root, first_leaf;  // its leaves are first_leaf, first_leaf + 1, ... (leaf order)
@@ -145,7 +161,7 @@ class MeshBvh {
   void refit_groups(Index first, Index end, Index faces, const Positions& x0, const Positions& x1,
                     RefitParts parts);
   void merge(const Merge& merge, RefitParts parts);
-  // Sets an inner node's box to the union of its children's.
+  // Sets an inner node's boxes to the unions of its children's.
   void join_children(Index node);
 
   const TriangleMesh* m_mesh = nullptr;

@@ -66,10 +66,11 @@ class CandidateTraversal::Walk {
     return false;
   }
 
-  // Tests the boxes of a node pair (counted as visited) and, when they overlap, walks it.
+  // Tests the boxes of a node pair (counted as visited) and, when its faces may meet during
+  // the step (MeshBvh::may_meet: boxes at both ends, bvh/step_boxes.hpp), walks it.
   void pair(const MeshBvh& a, Index node_a, const MeshBvh& b, Index node_b, ThreadOutput& out) {
     ++out.counts.node_pairs_visited;
-    if (a.box(node_a).overlaps(b.box(node_b))) overlapping_pair(a, node_a, b, node_b, out);
+    if (a.may_meet(node_a, b, node_b)) overlapping_pair(a, node_a, b, node_b, out);
   }
 
   // The two child pairs of an inner node pair: the larger node is split (the inner one
@@ -86,7 +87,7 @@ class CandidateTraversal::Walk {
     return {node_a, b.left(node_b), node_a, b.right(node_b)};
   }
 
-  // Two leaves whose boxes overlap: a candidate triangle pair unless adjacency culls it.
+  // Two leaves that may meet: a candidate triangle pair unless adjacency culls it.
   [[gnu::always_inline]] void leaf_pair(const MeshBvh& a, Index node_a, const MeshBvh& b,
                                         Index node_b, ThreadOutput& out) {
     Index f = a.leaf_face(node_a), g = b.leaf_face(node_b);
@@ -95,16 +96,16 @@ class CandidateTraversal::Walk {
     out.push({f, g});
   }
 
-  // A node pair whose boxes overlap: a candidate triangle pair at two leaves, otherwise
-  // both child pairs are tested here, so that the many pairs whose boxes do not overlap
-  // cost no call. Below the task grain the walk goes on in small_pair.
+  // A node pair that may meet: a candidate triangle pair at two leaves, otherwise both
+  // child pairs are tested here, so that the many pairs that cannot meet cost no call.
+  // Below the task grain the walk goes on in small_pair.
   void overlapping_pair(const MeshBvh& a, Index node_a, const MeshBvh& b, Index node_b,
                         ThreadOutput& out) {
     if (a.is_leaf(node_a) && b.is_leaf(node_b)) return leaf_pair(a, node_a, b, node_b, out);
     const ChildPairs c = child_pairs(a, node_a, b, node_b);
     out.counts.node_pairs_visited += 2;
-    const bool overlap1 = a.box(c.first_a).overlaps(b.box(c.first_b));
-    const bool overlap2 = a.box(c.second_a).overlaps(b.box(c.second_b));
+    const bool overlap1 = a.may_meet(c.first_a, b, c.first_b);
+    const bool overlap2 = a.may_meet(c.second_a, b, c.second_b);
     if (a.size(node_a) + b.size(node_b) <= kTaskGrain) {
       if (overlap1) small_pair(a, c.first_a, b, c.first_b, out);
       if (overlap2) small_pair(a, c.second_a, b, c.second_b, out);
@@ -126,15 +127,15 @@ class CandidateTraversal::Walk {
     if (a.is_leaf(node_a) && b.is_leaf(node_b)) return leaf_pair(a, node_a, b, node_b, out);
     const ChildPairs c = child_pairs(a, node_a, b, node_b);
     out.counts.node_pairs_visited += 2;
-    if (a.box(c.first_a).overlaps(b.box(c.first_b))) small_pair(a, c.first_a, b, c.first_b, out);
-    if (a.box(c.second_a).overlaps(b.box(c.second_b))) {
+    if (a.may_meet(c.first_a, b, c.first_b)) small_pair(a, c.first_a, b, c.first_b, out);
+    if (a.may_meet(c.second_a, b, c.second_b)) {
       small_pair(a, c.second_a, b, c.second_b, out);
     }
   }
 
  private:
   // Faces f and g share a vertex (TriangleMesh::faces_share_vertex, inlined: it runs for
-  // every leaf pair whose boxes overlap).
+  // every leaf pair that may meet).
   bool share_vertex(Index f, Index g) const {
     const FaceArray& faces = m_mesh.faces();
     const Index a0 = faces(f, 0), a1 = faces(f, 1), a2 = faces(f, 2);

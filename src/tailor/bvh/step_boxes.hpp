@@ -1,0 +1,35 @@
+#pragma once
+/// @file
+/// Whether two sets moving linearly over a step can meet, from their boxes at the step's two
+/// ends: a relative test, sharper than the overlap of their swept boxes.
+///
+/// Why it holds. A point of a triangle (or of any set of triangles) at a fixed barycentric
+/// position moves linearly from x(0) to x(1), and x(0) lies in the set's box at t = 0, x(1) in
+/// its box at t = 1. For two such points p (of set A) and q (of set B) and an axis k, q_k(t) -
+/// p_k(t) = (1 - t)(q_k(0) - p_k(0)) + t (q_k(1) - p_k(1)). If B's box lies strictly beyond
+/// A's along k at t = 0 (B.min_k > A.max_k) and again at t = 1, both terms are positive, so q_k
+/// > p_k for the whole step: no point of A meets a point of B. The same with the order
+/// reversed. The swept boxes (the union of both ends) are apart along k only when both end
+/// boxes are apart along k in one order, so this keeps every pair the swept boxes keep, and
+/// it also rejects sets that move far together: those whose swept boxes overlap only because
+/// the motion is large (cloth sliding on cloth). Float boxes rounded outward keep it
+/// conservative, and so does clamping beyond the float range (monotone: a strict order of
+/// clamped bounds is one of the bounds themselves).
+
+#include "tailor/bvh/float_box.hpp"
+
+namespace tailor {
+
+/// Whether sets A and B, with boxes `a_start`, `b_start` at t = 0 and `a_end`, `b_end` at t = 1,
+/// may meet during the step: false when one axis keeps them apart, in one order, at both ends.
+inline bool may_meet_over_step(const FloatBox& a_start, const FloatBox& a_end,
+                               const FloatBox& b_start, const FloatBox& b_end) {
+  bool apart = false;
+  for (int k = 0; k < 3; ++k) {
+    apart |= (a_start.max[k] < b_start.min[k]) & (a_end.max[k] < b_end.min[k]);
+    apart |= (b_start.max[k] < a_start.min[k]) & (b_end.max[k] < a_end.min[k]);
+  }
+  return !apart;
+}
+
+}  // namespace tailor
