@@ -108,5 +108,38 @@ TEST(StepBoxes, RandomMovingTrianglesSaidApartNeverIntersect) {
   EXPECT_GT(intersecting, 100);
 }
 
+TEST(StepBoxes, DoubleAndFloatBoxesGiveTheSameVerdict) {
+  // StepAabb (the thickness trees') and may_meet_over_step (the MeshBvh's) are one test:
+  // on boxes whose bounds are floats (so both hold the same numbers), including touching
+  // and equal bounds, they agree, and both parts of each order are needed.
+  std::mt19937_64 rng(43);
+  std::uniform_int_distribution<int> grid(-4, 4);
+  const auto boxes = [&] {
+    StepAabb d;
+    FloatBox start, end;
+    for (int k = 0; k < 3; ++k) {
+      const int a = grid(rng), b = grid(rng), c = grid(rng), e = grid(rng);
+      start.min[k] = static_cast<float>(std::min(a, b)),
+      start.max[k] = static_cast<float>(std::max(a, b));
+      end.min[k] = static_cast<float>(std::min(c, e)),
+      end.max[k] = static_cast<float>(std::max(c, e));
+      d.start.min[k] = start.min[k], d.start.max[k] = start.max[k];
+      d.end.min[k] = end.min[k], d.end.max[k] = end.max[k];
+    }
+    return std::pair{d, std::array{start, end}};
+  };
+  int apart = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const auto [a, fa] = boxes();
+    const auto [b, fb] = boxes();
+    const bool meet = may_meet_over_step(fa[0], fa[1], fb[0], fb[1]);
+    ASSERT_EQ(a.overlaps(b), meet) << trial;
+    ASSERT_EQ(b.overlaps(a), meet) << trial;
+    apart += !meet;
+  }
+  EXPECT_GT(apart, 2000);
+  EXPECT_LT(apart, 18000);
+}
+
 }  // namespace
 }  // namespace tailor

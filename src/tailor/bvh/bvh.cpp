@@ -4,7 +4,8 @@
 
 namespace tailor {
 
-Bvh::Bvh(std::span<const Aabb> primitive_boxes) {
+template <class Box>
+BasicBvh<Box>::BasicBvh(std::span<const Box> primitive_boxes) {
   const Index n = static_cast<Index>(primitive_boxes.size());
   if (n == 0) return;
   std::vector<Vec3> centers(static_cast<std::size_t>(n));
@@ -35,7 +36,8 @@ Bvh::Bvh(std::span<const Aabb> primitive_boxes) {
   refit(primitive_boxes);
 }
 
-void Bvh::refit(std::span<const Aabb> primitive_boxes) {
+template <class Box>
+void BasicBvh<Box>::refit(std::span<const Box> primitive_boxes) {
   for_each_node_bottom_up([&](Index node) {
     if (is_leaf(node)) {
       m_boxes[node] = primitive_boxes[primitive(node)];
@@ -45,5 +47,8 @@ void Bvh::refit(std::span<const Aabb> primitive_boxes) {
     }
   });
 }
+
+template class BasicBvh<Aabb>;
+template class BasicBvh<StepAabb>;
 
 }  // namespace tailor

@@ -8,18 +8,22 @@
 #include <vector>
 
 #include "tailor/bvh/aabb.hpp"
+#include "tailor/bvh/step_boxes.hpp"
 
 namespace tailor {
 
 /// Binary BVH with one primitive per leaf, stored in flat arrays. Nodes are numbered in
 /// depth-first pre-order from the root 0, so every child has a larger id than its parent
 /// and refitting in decreasing id order is bottom-up. The topology is built once; boxes
-/// are refitted as primitives move.
-class Bvh {
+/// are refitted as primitives move. `Box` is Aabb (Bvh) or StepAabb (StepBvh: boxes at
+/// both ends of a step, whose overlaps() is "may meet"); it has extend(), overlaps() and
+/// center().
+template <class Box>
+class BasicBvh {
  public:
-  Bvh() = default;
+  BasicBvh() = default;
   /// Builds the tree top-down (build_median_split_layout on the box centres).
-  explicit Bvh(std::span<const Aabb> primitive_boxes);
+  explicit BasicBvh(std::span<const Box> primitive_boxes);
 
   /// Number of nodes (2n - 1 for n primitives; 0 when empty).
   Index num_nodes() const { return static_cast<Index>(m_left.size()); }
@@ -47,9 +51,9 @@ class Bvh {
   const std::vector<Index>& primitive_order() const { return m_primitive_order; }
 
   /// Box of a node: its primitive's box for a leaf, the union of its children's otherwise.
-  const Aabb& box(Index node) const { return m_boxes[node]; }
+  const Box& box(Index node) const { return m_boxes[node]; }
   /// Sets every leaf box from `primitive_boxes` and refits inner nodes bottom-up (parallel).
-  void refit(std::span<const Aabb> primitive_boxes);
+  void refit(std::span<const Box> primitive_boxes);
 
   /// Calls `update(node)` for every node after both its children (bottom-up); disjoint
   /// subtrees run in parallel, so `update` may only write data of `node` itself.
@@ -61,7 +65,7 @@ class Bvh {
   /// Calls `visit(p, q)` for every pair of primitives `p` of this tree and `q` of `other`
   /// whose boxes overlap (sequential, deterministic order).
   template <class Visit>
-  void for_each_overlapping_pair(const Bvh& other, Visit&& visit) const;
+  void for_each_overlapping_pair(const BasicBvh& other, Visit&& visit) const;
   /// Calls `visit(p, q)`, p != q, once per unordered pair of overlapping primitives.
   template <class Visit>
   void for_each_self_overlapping_pair(Visit&& visit) const;
@@ -71,7 +75,8 @@ class Bvh {
   /// `visit(sink, p, q)` for its pairs. Tasks run on several threads at once, in no fixed
   /// order.
   template <class Local, class Visit>
-  void parallel_for_each_overlapping_pair(const Bvh& other, Local&& local, Visit&& visit) const {
+  void parallel_for_each_overlapping_pair(const BasicBvh& other, Local&& local,
+                                          Visit&& visit) const {
     if (!empty() && !other.empty()) parallel_pair(0, other, 0, local, visit);
   }
   /// The pairs of for_each_self_overlapping_pair, walked in parallel as above.
@@ -98,33 +103,41 @@ class Bvh {
     update(node);
   }
   template <class Visit>
-  void pair_recursive(Index a, const Bvh& other, Index b, Visit& visit) const;
+  void pair_recursive(Index a, const BasicBvh& other, Index b, Visit& visit) const;
   template <class Visit>
   void self_recursive(Index a, Visit& visit) const;
   template <class Local, class Visit>
-  void parallel_pair(Index a, const Bvh& other, Index b, Local& local, Visit& visit) const;
+  void parallel_pair(Index a, const BasicBvh& other, Index b, Local& local, Visit& visit) const;
   template <class Local, class Visit>
   void parallel_self(Index a, Local& local, Visit& visit) const;
 
   std::vector<Index> m_left, m_right, m_parent;  // leaf: left = -1, right = primitive
   std::vector<Index> m_first, m_count;           // range in m_primitive_order
   std::vector<Index> m_primitive_order, m_leaf_of_primitive;
-  std::vector<Aabb> m_boxes;
+  std::vector<Box> m_boxes;
 };
 
+/// A BVH over static boxes (or swept ones).
+using Bvh = BasicBvh<Aabb>;
+/// A BVH over boxes at both ends of a step (bvh/step_boxes.hpp).
+using StepBvh = BasicBvh<StepAabb>;
+
+template <class Box>
 template <class Visit>
-void Bvh::for_each_overlapping_pair(const Bvh& other, Visit&& visit) const {
+void BasicBvh<Box>::for_each_overlapping_pair(const BasicBvh& other, Visit&& visit) const {
   if (empty() || other.empty()) return;
   pair_recursive(0, other, 0, visit);
 }
 
+template <class Box>
 template <class Visit>
-void Bvh::for_each_self_overlapping_pair(Visit&& visit) const {
+void BasicBvh<Box>::for_each_self_overlapping_pair(Visit&& visit) const {
   if (!empty()) self_recursive(0, visit);
 }
 
+template <class Box>
 template <class Visit>
-void Bvh::pair_recursive(Index a, const Bvh& other, Index b, Visit& visit) const {
+void BasicBvh<Box>::pair_recursive(Index a, const BasicBvh& other, Index b, Visit& visit) const {
   if (!m_boxes[a].overlaps(other.m_boxes[b])) return;
   const bool a_leaf = is_leaf(a), b_leaf = other.is_leaf(b);
   if (a_leaf && b_leaf) {
@@ -138,8 +151,9 @@ void Bvh::pair_recursive(Index a, const Bvh& other, Index b, Visit& visit) const
   }
 }
 
+template <class Box>
 template <class Visit>
-void Bvh::self_recursive(Index a, Visit& visit) const {
+void BasicBvh<Box>::self_recursive(Index a, Visit& visit) const {
   if (is_leaf(a)) return;
   self_recursive(m_left[a], visit);
   self_recursive(m_right[a], visit);
@@ -148,8 +162,10 @@ void Bvh::self_recursive(Index a, Visit& visit) const {
 
 // The walk of pair_recursive, splitting the same node, with both halves as tasks while the
 // pair holds more than kParallelGrain primitives; below, one task walks it sequentially.
+template <class Box>
 template <class Local, class Visit>
-void Bvh::parallel_pair(Index a, const Bvh& other, Index b, Local& local, Visit& visit) const {
+void BasicBvh<Box>::parallel_pair(Index a, const BasicBvh& other, Index b, Local& local,
+                                  Visit& visit) const {
   if (m_count[a] + other.m_count[b] <= kParallelGrain) {
     auto& sink = local();
     auto to_sink = [&](Index p, Index q) { visit(sink, p, q); };
@@ -165,8 +181,9 @@ void Bvh::parallel_pair(Index a, const Bvh& other, Index b, Local& local, Visit&
   }
 }
 
+template <class Box>
 template <class Local, class Visit>
-void Bvh::parallel_self(Index a, Local& local, Visit& visit) const {
+void BasicBvh<Box>::parallel_self(Index a, Local& local, Visit& visit) const {
   if (m_count[a] <= kParallelGrain) {
     auto& sink = local();
     auto to_sink = [&](Index p, Index q) { visit(sink, p, q); };

@@ -11,9 +11,10 @@
 namespace tailor {
 
 /// Grows `edges[e]` and `faces[f]` (one box per edge and per face of `mesh`, usually empty
-/// ones) to hold the boxes of their vertices, `vertices[v]`.
-inline void bound_edges_and_faces(const TriangleMesh& mesh, const std::vector<Aabb>& vertices,
-                                  std::vector<Aabb>& edges, std::vector<Aabb>& faces) {
+/// ones) to hold the boxes of their vertices, `vertices[v]` (Aabb or StepAabb).
+template <class Box>
+void bound_edges_and_faces(const TriangleMesh& mesh, const std::vector<Box>& vertices,
+                           std::vector<Box>& edges, std::vector<Box>& faces) {
   for (Index e = 0; e < mesh.num_edges(); ++e) {
     edges[e].extend(vertices[mesh.edges()(e, 0)]);
     edges[e].extend(vertices[mesh.edges()(e, 1)]);

@@ -16,6 +16,7 @@
 /// conservative, and so does clamping beyond the float range (monotone: a strict order of
 /// clamped bounds is one of the bounds themselves).
 
+#include "tailor/bvh/aabb.hpp"
 #include "tailor/bvh/float_box.hpp"
 
 namespace tailor {
@@ -31,5 +32,29 @@ inline bool may_meet_over_step(const FloatBox& a_start, const FloatBox& a_end,
   }
   return !apart;
 }
+
+/// Boxes of a moving set at the step's start and end, in double: the box type of StepBvh,
+/// whose overlaps() is "may meet during the step" (the argument above). Boxes grown by h / 2
+/// each that cannot meet keep every point of one set more than h from every point of the
+/// other for the whole step (along the axis that parts them, the gap exceeds h at both ends).
+struct StepAabb {
+  Aabb start;  ///< at t = 0
+  Aabb end;    ///< at t = 1
+
+  /// Grows both boxes to hold `b`'s.
+  void extend(const StepAabb& b) {
+    start.extend(b.start);
+    end.extend(b.end);
+  }
+  /// Whether the two sets may meet during the step: false when one axis keeps them apart,
+  /// in one order, at both ends (closed boxes: touching may meet).
+  bool overlaps(const StepAabb& b) const {
+    const bool below = ((start.max < b.start.min) && (end.max < b.end.min)).any();
+    const bool above = ((b.start.max < start.min) && (b.end.max < end.min)).any();
+    return !(below || above);
+  }
+  /// The middle of the two boxes' centres (where the tree build sorts the set).
+  Vec3 center() const { return 0.5 * (start.center() + end.center()); }
+};
 
 }  // namespace tailor

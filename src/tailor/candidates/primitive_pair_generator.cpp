@@ -24,32 +24,42 @@ Corner corner(const Positions& x0, const Positions& x1, Index v) {
           x1.data() + 3 * static_cast<std::ptrdiff_t>(v)};
 }
 
-// Swept box of moving points (exact: min and max of the inputs).
+// Boxes of moving points at the step's two ends (exact: min and max of the inputs).
 struct Box {
-  double low[3], high[3];
+  double low[2][3], high[2][3];  // [frame][axis]
 };
 
-Box swept(Corner c) {
+Box point_box(Corner c) {
   Box box;
   for (int k = 0; k < 3; ++k) {
-    box.low[k] = std::min(c.t0[k], c.t1[k]);
-    box.high[k] = std::max(c.t0[k], c.t1[k]);
+    box.low[0][k] = box.high[0][k] = c.t0[k];
+    box.low[1][k] = box.high[1][k] = c.t1[k];
   }
   return box;
 }
 
 Box joined(const Box& a, const Box& b) {
   Box box;
-  for (int k = 0; k < 3; ++k) {
-    box.low[k] = std::min(a.low[k], b.low[k]);
-    box.high[k] = std::max(a.high[k], b.high[k]);
+  for (int frame = 0; frame < 2; ++frame) {
+    for (int k = 0; k < 3; ++k) {
+      box.low[frame][k] = std::min(a.low[frame][k], b.low[frame][k]);
+      box.high[frame][k] = std::max(a.high[frame][k], b.high[frame][k]);
+    }
   }
   return box;
 }
 
-bool overlap(const Box& a, const Box& b) {
-  return (a.low[0] <= b.high[0]) & (b.low[0] <= a.high[0]) & (a.low[1] <= b.high[1]) &
-         (b.low[1] <= a.high[1]) & (a.low[2] <= b.high[2]) & (b.low[2] <= a.high[2]);
+// Whether two primitives may meet during the step: not when one axis keeps their boxes
+// apart, in one order, at both ends (the argument of bvh/step_boxes.hpp: each point's
+// coordinate difference is linear in t, positive at both ends). Keeps every pair whose
+// swept boxes overlap apart too.
+bool may_meet(const Box& a, const Box& b) {
+  bool apart = false;
+  for (int k = 0; k < 3; ++k) {
+    apart |= (a.high[0][k] < b.low[0][k]) & (a.high[1][k] < b.low[1][k]);
+    apart |= (b.high[0][k] < a.low[0][k]) & (b.high[1][k] < a.low[1][k]);
+  }
+  return !apart;
 }
 
 bool contains(const Index* face, Index v) {
@@ -101,13 +111,13 @@ class Stages {
   Corner at(Index v) const { return corner(m_x0, m_x1, v); }
 
   // Boxes for VF pair (v, f), the face's corners a, b, c (`p_box` and `face_box` are their
-  // swept boxes), then the filters. `off_plane`: the triangle filter proved that p never
-  // meets the face's plane.
+  // boxes at both ends of the step), then the filters. `off_plane`: the triangle filter proved that
+  // p never meets the face's plane.
   void vertex_face(Index v, Index f, Corner p, Corner a, Corner b, Corner c, const Box& p_box,
                    const Box& face_box, bool off_plane, ThreadOutput& out) const {
     // Counted without branches; one branch for the pairs that go on (both are hard to
     // predict: about half the pairs pass the boxes).
-    const bool boxes_meet = !m_options.primitive_boxes || overlap(p_box, face_box);
+    const bool boxes_meet = !m_options.primitive_boxes || may_meet(p_box, face_box);
     ++out.counts.vf_generated;
     out.counts.vf_after_boxes += boxes_meet;
     if (boxes_meet & !off_plane) submit(PairKind::vertex_face, v, f, {a, b, c, p}, out);
@@ -117,7 +127,7 @@ class Stages {
   // filter proved that one edge never meets the plane of the other's triangle.
   void edge_edge(Index e1, Index e2, Corner a, Corner b, Corner c, Corner d, const Box& box1,
                  const Box& box2, bool off_plane, ThreadOutput& out) const {
-    const bool boxes_meet = !m_options.primitive_boxes || overlap(box1, box2);
+    const bool boxes_meet = !m_options.primitive_boxes || may_meet(box1, box2);
     ++out.counts.ee_generated;
     out.counts.ee_after_boxes += boxes_meet;
     if (boxes_meet & !off_plane) submit(PairKind::edge_edge, e1, e2, {a, b, c, d}, out);
@@ -127,8 +137,8 @@ class Stages {
   void vertex_face(Index v, Index f, ThreadOutput& out) const {
     const FaceArray& faces = m_mesh.faces();
     const Corner p = at(v), a = at(faces(f, 0)), b = at(faces(f, 1)), c = at(faces(f, 2));
-    vertex_face(v, f, p, a, b, c, swept(p), joined(joined(swept(a), swept(b)), swept(c)), false,
-                out);
+    vertex_face(v, f, p, a, b, c, point_box(p),
+                joined(joined(point_box(a), point_box(b)), point_box(c)), false, out);
   }
 
   // An EE pair by ids, e1 < e2 (the isolated set).
@@ -136,8 +146,8 @@ class Stages {
     const EdgeArray& edges = m_mesh.edges();
     const Corner a = at(edges(e1, 0)), b = at(edges(e1, 1));
     const Corner c = at(edges(e2, 0)), d = at(edges(e2, 1));
-    edge_edge(e1, e2, a, b, c, d, joined(swept(a), swept(b)), joined(swept(c), swept(d)), false,
-              out);
+    edge_edge(e1, e2, a, b, c, d, joined(point_box(a), point_box(b)),
+              joined(point_box(c), point_box(d)), false, out);
   }
 
   // Stage 1 and the rest: the feature pairs CTP (f, g) owes. Which ones it owes is
@@ -168,7 +178,7 @@ class Stages {
     for (int s = 0; s < 2; ++s) {
       for (int k = 0; k < 3; ++k) {
         corners[s][k] = at(face[s][k]);
-        corner_boxes[s][k] = swept(corners[s][k]);
+        corner_boxes[s][k] = point_box(corners[s][k]);
       }
       face_boxes[s] = joined(joined(corner_boxes[s][0], corner_boxes[s][1]), corner_boxes[s][2]);
     }

@@ -22,7 +22,7 @@ struct LowLevelOptions {
   bool triangle_filter =
       true;  ///< drop CTPs (and pairs) by their planes (triangle_plane_sides.hpp)
   bool feature_assignment = true;  ///< test each feature pair from one triangle pair only
-  bool primitive_boxes = true;     ///< drop pairs whose swept boxes do not overlap
+  bool primitive_boxes = true;  ///< drop pairs kept apart by their boxes at both ends of the step
   bool coplanarity_filter = true;  ///< drop pairs that can never become coplanar
   bool projection_filter =
       true;  ///< drop pairs whose projection never touches (projection_filter.hpp)
@@ -37,7 +37,7 @@ struct LowLevelCounts {
   std::int64_t vf_generated = 0, ee_generated = 0;
   ///@}
   ///@{
-  /// Pairs whose swept boxes overlap (all of them when that stage is off).
+  /// Pairs whose boxes may meet (bvh/step_boxes.hpp; all of them when that stage is off).
   std::int64_t vf_after_boxes = 0, ee_after_boxes = 0;
   ///@}
   ///@{

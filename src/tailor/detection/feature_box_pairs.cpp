@@ -22,23 +22,27 @@ bool edges_share_an_end(const TriangleMesh& mesh, Index e, Index g) {
   return a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1];
 }
 
-void FeatureBoxTrees::update(const TriangleMesh& mesh, const std::vector<Aabb>& vertex_boxes) {
-  std::vector<Aabb> edges(static_cast<std::size_t>(mesh.num_edges()));
-  std::vector<Aabb> faces(static_cast<std::size_t>(mesh.num_faces()));
+template <class Box>
+void BasicFeatureBoxTrees<Box>::update(const TriangleMesh& mesh,
+                                       const std::vector<Box>& vertex_boxes) {
+  std::vector<Box> edges(static_cast<std::size_t>(mesh.num_edges()));
+  std::vector<Box> faces(static_cast<std::size_t>(mesh.num_faces()));
   bound_edges_and_faces(mesh, vertex_boxes, edges, faces);
   // A tree is built once (the number of primitives tells), refitted afterwards.
-  const auto set = [](Bvh& tree, const std::vector<Aabb>& boxes) {
+  const auto set = [](BasicBvh<Box>& tree, const std::vector<Box>& boxes) {
     if (tree.num_primitives() == static_cast<Index>(boxes.size()) && !boxes.empty()) {
       tree.refit(boxes);
     } else {
-      tree = Bvh(boxes);
+      tree = BasicBvh<Box>(boxes);
     }
   };
   tbb::parallel_invoke([&] { set(m_vertices, vertex_boxes); }, [&] { set(m_edges, edges); },
                        [&] { set(m_faces, faces); });
 }
 
-std::vector<FeaturePairs> FeatureBoxTrees::overlapping_pair_parts(const TriangleMesh& mesh) const {
+template <class Box>
+std::vector<FeaturePairs> BasicFeatureBoxTrees<Box>::overlapping_pair_parts(
+    const TriangleMesh& mesh) const {
   // Each thread collects its pairs.
   tbb::enumerable_thread_specific<FeaturePairs> found;
   const auto local = [&]() -> FeaturePairs& { return found.local(); };
@@ -55,7 +59,8 @@ std::vector<FeaturePairs> FeatureBoxTrees::overlapping_pair_parts(const Triangle
   return parts;
 }
 
-FeaturePairs FeatureBoxTrees::overlapping_pairs(const TriangleMesh& mesh) const {
+template <class Box>
+FeaturePairs BasicFeatureBoxTrees<Box>::overlapping_pairs(const TriangleMesh& mesh) const {
   std::vector<FeaturePairs> parts = overlapping_pair_parts(mesh);
   FeaturePairs pairs;
   for (FeaturePairs& part : parts) {
@@ -66,5 +71,8 @@ FeaturePairs FeatureBoxTrees::overlapping_pairs(const TriangleMesh& mesh) const 
   }
   return pairs;
 }
+
+template class BasicFeatureBoxTrees<Aabb>;
+template class BasicFeatureBoxTrees<StepAabb>;
 
 }  // namespace tailor

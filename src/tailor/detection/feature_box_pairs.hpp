@@ -17,11 +17,14 @@ namespace tailor {
 /// searches on one mesh: built on the first update, refitted on later ones. A refitted tree
 /// finds the same pairs as a new one (every node's box is recomputed from its leaves); it
 /// only gets slower when the mesh has moved far from the configuration it was built on.
-class FeatureBoxTrees {
+/// `Box` is Aabb (FeatureBoxTrees: boxes at one instant, or swept) or StepAabb
+/// (StepFeatureBoxTrees: boxes at both ends of a step, whose pairs are those that may meet).
+template <class Box>
+class BasicFeatureBoxTrees {
  public:
   /// Sets the box of every vertex of `mesh` (one per vertex); an edge's or a face's box is
   /// the union of its vertices' boxes. `mesh` must be the one of earlier updates.
-  void update(const TriangleMesh& mesh, const std::vector<Aabb>& vertex_boxes);
+  void update(const TriangleMesh& mesh, const std::vector<Box>& vertex_boxes);
 
   /// Every vertex-face pair (a face not holding the vertex) and edge-edge pair (edges
   /// without a common end, edge_a < edge_b) whose boxes overlap (closed boxes); the trees
@@ -32,8 +35,13 @@ class FeatureBoxTrees {
   std::vector<FeaturePairs> overlapping_pair_parts(const TriangleMesh& mesh) const;
 
  private:
-  Bvh m_vertices, m_edges, m_faces;
+  BasicBvh<Box> m_vertices, m_edges, m_faces;
 };
+
+/// Trees over boxes at one instant (or swept boxes).
+using FeatureBoxTrees = BasicFeatureBoxTrees<Aabb>;
+/// Trees over boxes at both ends of a step.
+using StepFeatureBoxTrees = BasicFeatureBoxTrees<StepAabb>;
 
 /// Whether face `f` of `mesh` holds vertex `v`.
 bool face_holds(const TriangleMesh& mesh, Index f, Index v);

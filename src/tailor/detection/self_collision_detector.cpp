@@ -67,8 +67,9 @@ struct SelfCollisionDetector::Impl {
   bool root_certified = false;
   PrimitivePairGenerator generator;
   ExactPairTester tester;
-  // Collisions with a thickness: the trees over grown swept boxes, refitted each step.
-  FeatureBoxTrees thickness_trees;
+  // Collisions with a thickness: the trees over grown boxes at both ends of the step,
+  // refitted each step.
+  StepFeatureBoxTrees thickness_trees;
 
   Impl(const TriangleMesh& mesh_, const Positions& x_build, DetectionConfig config_,
        std::vector<std::vector<Index>> section_loops)
@@ -178,16 +179,18 @@ struct SelfCollisionDetector::Impl {
     stats.ccd_exact_fallbacks = tester.exact_fallbacks();
   }
 
-  // Collisions with a thickness h > 0: swept vertex boxes grown by h / 2 (two primitives
-  // within h at some time have boxes within h on every axis), their overlapping pairs, and
-  // the minimum-separation CCD. The other stages are off: their arguments hold for
-  // touching only (docs/thickness.md).
+  // Collisions with a thickness h > 0: each vertex's boxes at both ends of the step grown
+  // by h / 2, the vertex-face and edge-edge pairs that may meet (two primitives kept more
+  // than h apart along one axis at both ends, in one order, stay more than h apart for the
+  // whole step: bvh/step_boxes.hpp), and the minimum-separation CCD. The other stages are
+  // off: their arguments hold for touching only (docs/thickness.md).
   CollisionSet within_thickness(const Positions& x0, const Positions& x1, DetectionStats& stats) {
     const auto stage = SteadyClock::now();
-    std::vector<Aabb> boxes(static_cast<std::size_t>(mesh.num_vertices()));
+    std::vector<StepAabb> boxes(static_cast<std::size_t>(mesh.num_vertices()));
+    const double half = 0.5 * config.thickness;
     for (Index v = 0; v < mesh.num_vertices(); ++v) {
-      boxes[static_cast<std::size_t>(v)] =
-          grown_outwards(swept_box(x0, x1, {v}), 0.5 * config.thickness);
+      boxes[static_cast<std::size_t>(v)] = {grown_outwards(swept_box(x0, x0, {v}), half),
+                                            grown_outwards(swept_box(x1, x1, {v}), half)};
     }
     thickness_trees.update(mesh, boxes);
     const std::vector<FeaturePairs> parts = thickness_trees.overlapping_pair_parts(mesh);
