@@ -240,11 +240,12 @@ TEST(ThicknessCcd, AxisTestNeverClaimsAPairTheOracleSeesWithinH) {
 }
 
 TEST(ThicknessCcd, WitnessClaimsOnlyPairsWithinH) {
-  // Random configurations at three scales: the witness "within h at this instant" may
-  // claim a pair only when the long-double distance is at most h, must claim nearly every
-  // pair 1e-9 relative above its distance, and none 1e-12 below it.
+  // Random configurations at three scales, alone and as the time t of a random step: the
+  // witness "within h at this instant" may claim a pair only when the long-double
+  // distance is at most h, must claim nearly every pair 1e-9 relative above its distance,
+  // and none 1e-12 below it.
   std::mt19937_64 rng(31);
-  std::uniform_real_distribution<double> coordinate(-1, 1);
+  std::uniform_real_distribution<double> coordinate(-1, 1), time(0, 1);
   const int runs = testing::sanitized() ? 300 : 3000;
   int claimed = 0, tried = 0;
   for (const double scale : {1.0, 0x1p-200, 0x1p200}) {
@@ -252,18 +253,28 @@ TEST(ThicknessCcd, WitnessClaimsOnlyPairsWithinH) {
       return Vec3(scale * coordinate(rng), scale * coordinate(rng), scale * coordinate(rng));
     };
     for (int i = 0; i < runs; ++i) {
-      const FourPoints x{point(), point(), point(), point()};
-      const auto w = [&](int k) { return testing::wide(x[k]); };
+      const FourPoints x0{point(), point(), point(), point()};
+      const FourPoints x1{point(), point(), point(), point()};
+      const bool in_step = i % 2 == 1;
+      const double t = in_step ? time(rng) : 0.0;
+      const auto w = [&](int k) {
+        return testing::L3(testing::wide(x0[k]) +
+                           static_cast<long double>(t) *
+                               (testing::wide(x1[k]) - testing::wide(x0[k])));
+      };
       for (const PairShape shape : {PairShape::vertex_face, PairShape::edge_edge}) {
         const long double d = shape == PairShape::vertex_face
                                   ? testing::point_triangle_distance(w(0), w(1), w(2), w(3))
                                   : testing::segment_distance(w(0), w(1), w(2), w(3));
         if (!(d > 0)) continue;
-        const double above = static_cast<double>(d * (1 + 1e-9L));
-        const double below = static_cast<double>(d * (1 - 1e-12L));
+        const auto claims = [&](double h) {
+          return in_step ? within_by_closest_points(x0, x1, t, shape, h)
+                         : within_by_closest_points(x0, shape, h);
+        };
         ++tried;
-        if (within_by_closest_points(x, shape, above)) ++claimed;
-        EXPECT_FALSE(within_by_closest_points(x, shape, below)) << i << " at scale " << scale;
+        if (claims(static_cast<double>(d * (1 + 1e-9L)))) ++claimed;
+        EXPECT_FALSE(claims(static_cast<double>(d * (1 - 1e-12L))))
+            << i << " at scale " << scale << ", t = " << t;
       }
     }
   }

@@ -36,10 +36,10 @@ enum class CcdQueryKind { vertex_face, edge_edge };
 
 /// The queries of one file.
 struct CcdQueryFile {
-  std::string path;  ///< where they were read from
+  std::string path;                               ///< where they were read from
   CcdQueryKind kind = CcdQueryKind::vertex_face;  ///< which of the two lists is filled
-  std::vector<VertexFaceQuery> vertex_face;  ///< filled when kind == vertex_face
-  std::vector<EdgeEdgeQuery> edge_edge;      ///< filled when kind == edge_edge
+  std::vector<VertexFaceQuery> vertex_face;       ///< filled when kind == vertex_face
+  std::vector<EdgeEdgeQuery> edge_edge;           ///< filled when kind == edge_edge
   /// Ground truth per query (from the 7th column), empty when the file has none.
   std::vector<bool> truth;
 

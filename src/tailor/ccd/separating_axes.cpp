@@ -92,14 +92,29 @@ std::optional<Vec3> witness_difference(const FourPoints& x, PairShape shape) {
   return (x[2] + uc * (x[3] - x[2])) - (x[0] + sc * (x[1] - x[0]));
 }
 
+/// The sum of all |coordinates| of a configuration.
+double size_of(const FourPoints& x) {
+  double size = 0;
+  for (const Vec3& point : x) size += point.cwiseAbs().sum();
+  return size;
+}
+
+/// The witness on the configuration `x`, with `slack` more for how far `x` may be off.
+bool witness_within(const FourPoints& x, PairShape shape, double h, double slack) {
+  const std::optional<Vec3> d = witness_difference(x, shape);
+  if (!d || !(d->cwiseAbs().maxCoeff() > 1e-140)) return false;  // none, or underflow
+  return d->norm() * (1 + 1e-15) + 4e-15 * size_of(x) + slack < h;
+}
+
 }  // namespace
 
 bool within_by_closest_points(const FourPoints& x, PairShape shape, double h) {
-  const std::optional<Vec3> d = witness_difference(x, shape);
-  if (!d || !(d->cwiseAbs().maxCoeff() > 1e-140)) return false;  // none, or underflow
-  double size = 0;
-  for (const Vec3& point : x) size += point.cwiseAbs().sum();
-  return d->norm() * (1 + 1e-15) + 4e-15 * size < h;
+  return witness_within(x, shape, h, 0);
+}
+
+bool within_by_closest_points(const FourPoints& x0, const FourPoints& x1, double t, PairShape shape,
+                              double h) {
+  return witness_within(positions_at(x0, x1, t), shape, h, 1e-15 * (size_of(x0) + size_of(x1)));
 }
 
 bool apart_along_a_coordinate_axis(const FourPoints& x0, const FourPoints& x1, PairShape shape,

@@ -62,4 +62,11 @@ double clear_along_closest_direction(const FourPoints& x0, const FourPoints& x1,
 /// zero, or one too small to square without underflow, refuses.
 bool within_by_closest_points(const FourPoints& x, PairShape shape, double h);
 
+/// The same witness at the time `t` of the step from `x0` to `x1`: the positions (1 - t) x0 +
+/// t x1 are formed in double, each coordinate within 3·2^-53 (|x0| + |x1|) of the exact one,
+/// and a point of either primitive, a convex combination of them, is no farther off; so the
+/// bound adds 1e-15 times the sum of all |coordinates| of both frames.
+bool within_by_closest_points(const FourPoints& x0, const FourPoints& x1, double t, PairShape shape,
+                              double h);
+
 }  // namespace tailor

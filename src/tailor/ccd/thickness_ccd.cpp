@@ -236,10 +236,14 @@ class EarliestWithin {
     return result_;
   }
 
-  /// Whether the exact positions at the time t are within sqrt(h2): balls around them
-  /// first (they enclose the exact positions, so a decided answer is the exact one), exact
-  /// rationals when the balls cannot decide.
+  /// Whether the exact positions at the time t are within h (or the widened h): a witness
+  /// of two points within h (1 + 0.9e-6) ≤ h √(1 + 2e-6) first (closest points in double,
+  /// ccd/separating_axes.hpp; it can only say yes), then balls around the exact positions
+  /// (they enclose them, so a decided answer is the exact one), exact rationals when the
+  /// balls cannot decide.
   bool within_at(double t, Reach reach) const {
+    const double witness_h = reach == Reach::h ? h_ : h_ * (1 + 0.9e-6);
+    if (within_by_closest_points(m_.x0, m_.x1, t, shape_, witness_h)) return true;
     const Truth near =
         conditions_(BoxedStep{m_, Ball(t)}, reach == Reach::h ? h2_ : widened_h2_, never());
     if (near != Truth::unknown) return near == Truth::yes;

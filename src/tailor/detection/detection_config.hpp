@@ -59,7 +59,8 @@ inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
          "feature assignment: each vertex and edge tested through one representative triangle "   \
          "(Curtis et al. 2008)")                                                                  \
   SWITCH(primitive_boxes, true, "primitive-boxes", work_only,                                     \
-         "swept bounding boxes of the vertex-face and edge-edge pairs")                           \
+         "bounding boxes of the vertex-face and edge-edge pairs at both ends of the step "        \
+         "(bvh/step_boxes.hpp)")                                                                  \
   SWITCH(coplanarity_filter, true, "filter", work_only,                                           \
          "non-coplanarity (DNF) filter: drop pairs that can never become coplanar")               \
   SWITCH(projection_filter, true, "projection", work_only,                                        \
@@ -69,8 +70,8 @@ inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
          "radial-view culling, where observers (section loops) are given")                        \
   NUMBER(double, thickness, 0.0, 0, 1e300, "thickness", defines_result,                           \
          "collisions with a thickness: report each pair that comes within this distance during "  \
-         "the step, at the earliest such time (0: touching); above 0 only swept boxes grown by "  \
-         "half of it cull, the other stages are off (ccd/thickness_ccd.hpp)")                     \
+         "the step, at the earliest such time (0: touching); above 0 only boxes at both ends of " \
+         "the step grown by half of it cull, the other stages are off (ccd/thickness_ccd.hpp)")   \
   NUMBER(int, threads, 0, 0, kUnbounded, "threads", work_only,                                    \
          "worker threads (0: all hardware threads)")                                              \
   SWITCH(classify_every_cluster, false, "classify-every-cluster", output_only,                    \
