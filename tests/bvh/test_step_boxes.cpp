@@ -108,33 +108,43 @@ TEST(StepBoxes, RandomMovingTrianglesSaidApartNeverIntersect) {
   EXPECT_GT(intersecting, 100);
 }
 
-TEST(StepBoxes, DoubleAndFloatBoxesGiveTheSameVerdict) {
-  // StepAabb (the thickness trees') and may_meet_over_step (the MeshBvh's) are one test:
-  // on boxes whose bounds are floats (so both hold the same numbers), including touching
-  // and equal bounds, they agree, and both parts of each order are needed.
+TEST(StepBoxes, FloatBoxesHoldTheDoubleOnesAndPartOnlyWhatTheyPart) {
+  // StepBox::holding rounds double boxes outward to floats: each float box holds its double
+  // box, and a pair the float boxes part is parted by the double boxes too (along an axis at
+  // both ends, in one order); on coordinates that are floats, the two verdicts agree.
   std::mt19937_64 rng(43);
+  std::uniform_real_distribution<double> coordinate(-4, 4);
   std::uniform_int_distribution<int> grid(-4, 4);
-  const auto boxes = [&] {
-    StepAabb d;
-    FloatBox start, end;
+  const auto exact_apart = [](const Aabb(&a)[2], const Aabb(&b)[2]) {
+    bool apart = false;
     for (int k = 0; k < 3; ++k) {
-      const int a = grid(rng), b = grid(rng), c = grid(rng), e = grid(rng);
-      start.min[k] = static_cast<float>(std::min(a, b)),
-      start.max[k] = static_cast<float>(std::max(a, b));
-      end.min[k] = static_cast<float>(std::min(c, e)),
-      end.max[k] = static_cast<float>(std::max(c, e));
-      d.start.min[k] = start.min[k], d.start.max[k] = start.max[k];
-      d.end.min[k] = end.min[k], d.end.max[k] = end.max[k];
+      apart |= a[0].max[k] < b[0].min[k] && a[1].max[k] < b[1].min[k];
+      apart |= b[0].max[k] < a[0].min[k] && b[1].max[k] < a[1].min[k];
     }
-    return std::pair{d, std::array{start, end}};
+    return apart;
   };
   int apart = 0;
   for (int trial = 0; trial < 20000; ++trial) {
-    const auto [a, fa] = boxes();
-    const auto [b, fb] = boxes();
-    const bool meet = may_meet_over_step(fa[0], fa[1], fb[0], fb[1]);
-    ASSERT_EQ(a.overlaps(b), meet) << trial;
-    ASSERT_EQ(b.overlaps(a), meet) << trial;
+    const bool on_floats = trial % 2 == 0;
+    const auto value = [&] { return on_floats ? double(grid(rng)) : coordinate(rng); };
+    const auto box = [&] {
+      Aabb b;
+      b.extend(Vec3(value(), value(), value()));
+      b.extend(Vec3(value(), value(), value()));
+      return b;
+    };
+    const Aabb a[2] = {box(), box()}, b[2] = {box(), box()};
+    const StepBox fa = StepBox::holding(a[0], a[1]), fb = StepBox::holding(b[0], b[1]);
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_LE(fa.start.min[k], a[0].min[k]);
+      ASSERT_GE(fa.start.max[k], a[0].max[k]);
+      ASSERT_LE(fa.end.min[k], a[1].min[k]);
+      ASSERT_GE(fa.end.max[k], a[1].max[k]);
+    }
+    const bool meet = fa.overlaps(fb);
+    ASSERT_EQ(meet, fb.overlaps(fa)) << trial;
+    if (!meet) ASSERT_TRUE(exact_apart(a, b)) << trial;
+    if (on_floats) ASSERT_EQ(meet, !exact_apart(a, b)) << trial;
     apart += !meet;
   }
   EXPECT_GT(apart, 2000);

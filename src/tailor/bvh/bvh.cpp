@@ -49,6 +49,6 @@ void BasicBvh<Box>::refit(std::span<const Box> primitive_boxes) {
 }
 
 template class BasicBvh<Aabb>;
-template class BasicBvh<StepAabb>;
+template class BasicBvh<StepBox>;
 
 }  // namespace tailor

@@ -11,7 +11,7 @@
 namespace tailor {
 
 /// Grows `edges[e]` and `faces[f]` (one box per edge and per face of `mesh`, usually empty
-/// ones) to hold the boxes of their vertices, `vertices[v]` (Aabb or StepAabb).
+/// ones) to hold the boxes of their vertices, `vertices[v]` (Aabb or StepBox).
 template <class Box>
 void bound_edges_and_faces(const TriangleMesh& mesh, const std::vector<Box>& vertices,
                            std::vector<Box>& edges, std::vector<Box>& faces) {

@@ -33,28 +33,41 @@ inline bool may_meet_over_step(const FloatBox& a_start, const FloatBox& a_end,
   return !apart;
 }
 
-/// Boxes of a moving set at the step's start and end, in double: the box type of StepBvh,
-/// whose overlaps() is "may meet during the step" (the argument above). Boxes grown by h / 2
-/// each that cannot meet keep every point of one set more than h from every point of the
-/// other for the whole step (along the axis that parts them, the gap exceeds h at both ends).
-struct StepAabb {
-  Aabb start;  ///< at t = 0
-  Aabb end;    ///< at t = 1
+/// Boxes of a moving set at the step's start and end, in float rounded outward (half the
+/// memory of double boxes): the box type of StepBvh, whose overlaps() is may_meet_over_step().
+/// Boxes grown by h / 2 each that cannot meet keep every point of one set more than h from
+/// every point of the other for the whole step (along the axis that parts them, the gap
+/// exceeds h at both ends).
+struct StepBox {
+  FloatBox start;  ///< at t = 0
+  FloatBox end;    ///< at t = 1
 
+  /// The float boxes holding the double boxes `at_start` and `at_end`.
+  static StepBox holding(const Aabb& at_start, const Aabb& at_end) {
+    StepBox box;
+    for (int k = 0; k < 3; ++k) {
+      box.start.min[k] = float_at_most(at_start.min[k]);
+      box.start.max[k] = float_at_least(at_start.max[k]);
+      box.end.min[k] = float_at_most(at_end.min[k]);
+      box.end.max[k] = float_at_least(at_end.max[k]);
+    }
+    return box;
+  }
   /// Grows both boxes to hold `b`'s.
-  void extend(const StepAabb& b) {
+  void extend(const StepBox& b) {
     start.extend(b.start);
     end.extend(b.end);
   }
-  /// Whether the two sets may meet during the step: false when one axis keeps them apart,
-  /// in one order, at both ends (closed boxes: touching may meet).
-  bool overlaps(const StepAabb& b) const {
-    const bool below = ((start.max < b.start.min) && (end.max < b.end.min)).any();
-    const bool above = ((b.start.max < start.min) && (b.end.max < end.min)).any();
-    return !(below || above);
-  }
+  /// Whether the two sets may meet during the step (may_meet_over_step()).
+  bool overlaps(const StepBox& b) const { return may_meet_over_step(start, end, b.start, b.end); }
   /// The middle of the two boxes' centres (where the tree build sorts the set).
-  Vec3 center() const { return 0.5 * (start.center() + end.center()); }
+  Vec3 center() const {
+    Vec3 c;
+    for (int k = 0; k < 3; ++k) {
+      c[k] = 0.25 * (double{start.min[k]} + start.max[k] + end.min[k] + end.max[k]);
+    }
+    return c;
+  }
 };
 
 }  // namespace tailor

@@ -73,6 +73,6 @@ FeaturePairs BasicFeatureBoxTrees<Box>::overlapping_pairs(const TriangleMesh& me
 }
 
 template class BasicFeatureBoxTrees<Aabb>;
-template class BasicFeatureBoxTrees<StepAabb>;
+template class BasicFeatureBoxTrees<StepBox>;
 
 }  // namespace tailor

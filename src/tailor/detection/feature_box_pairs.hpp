@@ -17,7 +17,7 @@ namespace tailor {
 /// searches on one mesh: built on the first update, refitted on later ones. A refitted tree
 /// finds the same pairs as a new one (every node's box is recomputed from its leaves); it
 /// only gets slower when the mesh has moved far from the configuration it was built on.
-/// `Box` is Aabb (FeatureBoxTrees: boxes at one instant, or swept) or StepAabb
+/// `Box` is Aabb (FeatureBoxTrees: boxes at one instant, or swept) or StepBox
 /// (StepFeatureBoxTrees: boxes at both ends of a step, whose pairs are those that may meet).
 template <class Box>
 class BasicFeatureBoxTrees {
@@ -41,7 +41,7 @@ class BasicFeatureBoxTrees {
 /// Trees over boxes at one instant (or swept boxes).
 using FeatureBoxTrees = BasicFeatureBoxTrees<Aabb>;
 /// Trees over boxes at both ends of a step.
-using StepFeatureBoxTrees = BasicFeatureBoxTrees<StepAabb>;
+using StepFeatureBoxTrees = BasicFeatureBoxTrees<StepBox>;
 
 /// Whether face `f` of `mesh` holds vertex `v`.
 bool face_holds(const TriangleMesh& mesh, Index f, Index v);

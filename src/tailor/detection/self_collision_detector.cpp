@@ -186,11 +186,12 @@ struct SelfCollisionDetector::Impl {
   // off: their arguments hold for touching only (docs/thickness.md).
   CollisionSet within_thickness(const Positions& x0, const Positions& x1, DetectionStats& stats) {
     const auto stage = SteadyClock::now();
-    std::vector<StepAabb> boxes(static_cast<std::size_t>(mesh.num_vertices()));
+    std::vector<StepBox> boxes(static_cast<std::size_t>(mesh.num_vertices()));
     const double half = 0.5 * config.thickness;
     for (Index v = 0; v < mesh.num_vertices(); ++v) {
-      boxes[static_cast<std::size_t>(v)] = {grown_outwards(swept_box(x0, x0, {v}), half),
-                                            grown_outwards(swept_box(x1, x1, {v}), half)};
+      boxes[static_cast<std::size_t>(v)] =
+          StepBox::holding(grown_outwards(swept_box(x0, x0, {v}), half),
+                           grown_outwards(swept_box(x1, x1, {v}), half));
     }
     thickness_trees.update(mesh, boxes);
     const std::vector<FeaturePairs> parts = thickness_trees.overlapping_pair_parts(mesh);
