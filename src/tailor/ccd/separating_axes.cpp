@@ -48,24 +48,6 @@ struct Projections {
   int count = 0;
 };
 
-/// A certified lower bound of u · (y - x) (see the header: within 1e-15 Σ|u|(|x| + |y|),
-/// plus an absolute 1e-300 for underflow).
-double lower_dot(const Vec3& u, const Vec3& x, const Vec3& y) {
-  const Vec3 d = y - x;
-  const double size = u.cwiseAbs().dot(x.cwiseAbs() + y.cwiseAbs());
-  return u.dot(d) - (1e-15 * size + 1e-300);
-}
-
-Projections project(const Vec3& u, const FourPoints& x0, const FourPoints& x1, PairShape shape) {
-  Projections p;
-  for (const auto& [i, j] : differences(shape)) {
-    p.start[static_cast<std::size_t>(p.count)] = lower_dot(u, x0[i], x0[j]);
-    p.end[static_cast<std::size_t>(p.count)] = lower_dot(u, x1[i], x1[j]);
-    ++p.count;
-  }
-  return p;
-}
-
 /// Whether every u · d_k(t) certainly exceeds `reach` (u · d_k(t) is at least the
 /// interpolation of the lower bounds, computed within 1e-15 of their sizes).
 bool all_beyond(const Projections& p, double t, double reach) {
@@ -134,13 +116,32 @@ bool apart_along_a_coordinate_axis(const FourPoints& x0, const FourPoints& x1, P
   return false;
 }
 
-double clear_along_closest_direction(const FourPoints& x0, const FourPoints& x1, PairShape shape,
-                                     double t, double h) {
-  const Vec3 u = closest_direction(positions_at(x0, x1, t), shape);
+ClosestDirectionAdvance::ClosestDirectionAdvance(const FourPoints& x0, const FourPoints& x1,
+                                                 PairShape shape, double h)
+    : m_x0(x0), m_x1(x1), m_shape(shape), m_h(h) {
+  for (const auto& [i, j] : differences(shape)) {
+    const std::size_t k = static_cast<std::size_t>(m_count++);
+    m_start[k] = x0[j] - x0[i];
+    m_end[k] = x1[j] - x1[i];
+    m_start_size[k] = (x0[i].cwiseAbs() + x0[j].cwiseAbs()).sum();
+    m_end_size[k] = (x1[i].cwiseAbs() + x1[j].cwiseAbs()).sum();
+  }
+}
+
+double ClosestDirectionAdvance::clear_from(double t) const {
+  const Vec3 u = closest_direction(positions_at(m_x0, m_x1, t), m_shape);
   const double length = u.norm();
   if (!(length > 0) || !std::isfinite(length)) return t;
-  const double reach = h * length * (1 + 1e-14);  // ≥ h |u| (the norm rounds a few times)
-  const Projections p = project(u, x0, x1, shape);
+  const double reach = m_h * length * (1 + 1e-14);  // ≥ h |u| (the norm rounds a few times)
+  // u · d_k is computed within 5·2^-53 Σ|u_c| (|x_c| + |y_c|) ≤ 1e-15 max|u_c| Σ(|x_c| +
+  // |y_c|) (see the header), plus an absolute 1e-300 for underflow.
+  const double largest = u.cwiseAbs().maxCoeff();
+  Projections p;
+  p.count = m_count;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(m_count); ++k) {
+    p.start[k] = u.dot(m_start[k]) - (1e-15 * largest * m_start_size[k] + 1e-300);
+    p.end[k] = u.dot(m_end[k]) - (1e-15 * largest * m_end_size[k] + 1e-300);
+  }
   if (!all_beyond(p, t, reach)) return t;
   // Where the first u · d_k would come down to h |u|; just before it, certified.
   double until = 1;
@@ -156,6 +157,11 @@ double clear_along_closest_direction(const FourPoints& x0, const FourPoints& x1,
     if (all_beyond(p, end, reach)) return end;
   }
   return t;
+}
+
+double clear_along_closest_direction(const FourPoints& x0, const FourPoints& x1, PairShape shape,
+                                     double t, double h) {
+  return ClosestDirectionAdvance(x0, x1, shape, h).clear_from(t);
 }
 
 }  // namespace tailor

@@ -19,9 +19,12 @@
 /// Certified evaluation: u is any vector of doubles (how it is chosen only decides how
 /// sharp the test is). A difference of two coordinates rounds once and a three-term dot
 /// product three more times, so u · d_k is computed within 5·2^-53 Σ|u_c| (|x_c| + |y_c|)
-/// over the coordinates c of the two points x, y (bounded here by 1e-15 times that sum);
+/// over the coordinates c of the two points x, y (bounded here by 1e-15 max|u_c| Σ(|x_c| +
+/// |y_c|), whose sums are formed once per pair);
 /// the interpolation in t and |u| get their own generous factors. Overflowing or
 /// non-finite values only refuse (nothing is claimed).
+
+#include <array>
 
 #include "tailor/geometry/types.hpp"
 
@@ -50,6 +53,27 @@ bool apart_along_a_coordinate_axis(const FourPoints& x0, const FourPoints& x1, P
 /// whose closest direction turns needs several, from the times returned.
 double clear_along_closest_direction(const FourPoints& x0, const FourPoints& x1, PairShape shape,
                                      double t, double h);
+
+/// clear_along_closest_direction() for repeated calls on one pair (the search calls it up
+/// to hundreds of times): the corner differences at both ends and the sums their error
+/// bounds need are formed once. Keeps references to `x0` and `x1`.
+class ClosestDirectionAdvance {
+ public:
+  /// The pair of points `x0` (t = 0) and `x1` (t = 1), of shape `shape`, against `h`.
+  ClosestDirectionAdvance(const FourPoints& x0, const FourPoints& x1, PairShape shape, double h);
+  /// t1 ≥ `t` such that no two points of the pair are within h at any time of [t, t1]
+  /// (t when nothing is proven), as clear_along_closest_direction().
+  double clear_from(double t) const;
+
+ private:
+  const FourPoints& m_x0;
+  const FourPoints& m_x1;
+  PairShape m_shape;
+  double m_h;
+  int m_count = 0;                                 // differences: 3 or 4
+  std::array<Vec3, 4> m_start, m_end;              // d_k at t = 0 and t = 1 (rounded)
+  std::array<double, 4> m_start_size, m_end_size;  // Σ_c |x_c| + |y_c| of each
+};
 
 /// Whether two points of the pair in the configuration `x` (exact coordinates, e.g. a
 /// step's start) are certainly within `h`: a witness for "within h" that needs no

@@ -124,6 +124,7 @@ class EarliestWithin {
         shape_(shape),
         h_(h),
         speed_(speed),
+        advance_(m.x0, m.x1, shape, h),
         find_never_(std::move(find_never)),
         conditions_(std::move(conditions)),
         h2_(Ball(h) * Ball(h)),
@@ -206,7 +207,7 @@ class EarliestWithin {
   bool advance(double& from) {
     double t = 0;
     for (int step = 0; step < kAdvanceSteps; ++step) {
-      const double next = clear_along_closest_direction(m_.x0, m_.x1, shape_, t, h_);
+      const double next = advance_.clear_from(t);
       if (next >= 1) return true;         // clear on the whole step: a miss
       if (next == t && step == 0) break;  // nothing proven (e.g. a degenerate triangle)
       if (next - t >= narrowest_) {
@@ -283,6 +284,7 @@ class EarliestWithin {
   const StepPoints& m_;
   PairShape shape_;
   double h_, speed_;
+  ClosestDirectionAdvance advance_;
   FindNever find_never_;
   mutable std::optional<detail::NeverPresent> never_;
   Conditions conditions_;
