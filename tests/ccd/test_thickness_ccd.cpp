@@ -283,10 +283,11 @@ TEST(ThicknessCcd, WitnessClaimsOnlyPairsWithinH) {
 
 TEST(ThicknessCcd, NearlyParallelEdgesAgreeWithTheSampledOracle) {
   // Two edges at a small angle (1e-7 to 1e-2) a random gap apart, carried by one large
-  // motion and turning a little relative to each other: the lines' distance over |n| is
-  // a ratio of two small numbers here, so a bound of |n| that undercut it would let the
-  // plane test drop pairs within h. h just above the sampled minimum must hit (at or
-  // before the first sampled time within h); h below the minimum must not.
+  // motion and turning a little relative to each other: nearly parallel closest points
+  // (the segment parameters are ill-conditioned, so the advancement's direction is
+  // rough) and distances that are ratios of small numbers. h just above the sampled
+  // minimum must hit (at or before the first sampled time within h); h below the minimum
+  // must not.
   std::mt19937_64 rng(37);
   std::uniform_real_distribution<double> unit(-1, 1), gap(1e-3, 0.2), exponent(-7, -2);
   const int runs = testing::sanitized() ? 100 : 1000, samples = 4000;

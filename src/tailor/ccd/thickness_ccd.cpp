@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -16,7 +15,6 @@
 
 #include "tailor/ccd/proximity_conditions.hpp"
 #include "tailor/ccd/separating_axes.hpp"
-#include "tailor/geometry/coplanarity_sign.hpp"
 
 namespace tailor {
 namespace {
@@ -140,37 +138,23 @@ class EarliestWithin {
       result_.toi = result_.hit ? 0.0 : 1.0;
       return result_;
     }
+    double from = 0;
+    if (whole_step_decided(from)) return result_;
     // Intervals still to look at, latest first, so the back is the earliest.
     std::array<std::pair<double, double>, 128> stack;
     int top = 0;
-    stack[top++] = {0.0, 1.0};
+    stack[top++] = {from, 1.0};
     while (top > 0) {
       const auto [lo, hi] = stack[--top];
       ++result_.intervals;
-      // The conditions over the interval's boxes: on the whole step when the primitives
-      // move less than h relative to each other (the boxes are then tight; cloth-funnel),
-      // and on the narrowest intervals before their midpoint decides. Elsewhere the
-      // Lipschitz test at the midpoint below clears more for less (cloth-ball: 17.2 ->
-      // 11.4 s, then 10.1 -> 9.2 s for the whole step); skipping a proof can only split an
-      // interval further, never drop a pair.
-      const bool whole_or_narrowest = (hi - lo >= 1.0 && speed_ <= h_) || hi - lo <= narrowest_;
-      const Truth within = whole_or_narrowest
-                               ? conditions_(BoxedStep{m_, detail::ball_hull(lo, hi)}, h2_, never())
-                               : Truth::unknown;
-      if (within == Truth::no) continue;
-      if (within == Truth::yes) return hit(lo, false);
-      // The whole step undecided: the advancement from t = 0 (its first call, cheaper than
-      // the conditions, proves the pair clear at t = 0 whenever it proves anything); if it
-      // proves nothing, within h at t = 0 (balls on the exact start positions, exact when
-      // they cannot tell) makes the earliest time 0, with no search.
-      if (result_.intervals == 1) {
-        double from = 0;
-        if (advance(from)) return result_;
-        if (from > 0) {
-          stack[top++] = {from, 1.0};
-          continue;
-        }
-        if (within_at(0.0, Reach::h)) return hit(0.0, false);
+      // The conditions over the interval's boxes on the narrowest intervals, before their
+      // midpoint decides. Elsewhere the Lipschitz test at the midpoint below clears more for
+      // less (cloth-ball: 17.2 -> 11.4 s, then 10.1 -> 9.2 s for the whole step); skipping
+      // a proof can only split an interval further, never drop a pair.
+      if (hi - lo <= narrowest_) {
+        const Truth within = conditions_(BoxedStep{m_, detail::ball_hull(lo, hi)}, h2_, never());
+        if (within == Truth::no) continue;
+        if (within == Truth::yes) return hit(lo, false);
       }
       const double mid = 0.5 * lo + 0.5 * hi;
       if (clear_by_lipschitz(lo, hi, mid, hi - lo <= kExactLipschitzBelow)) continue;
@@ -193,6 +177,26 @@ class EarliestWithin {
   }
 
  private:
+  /// The whole step before any search. First the advancement from t = 0 (cheap; its first
+  /// call proves t = 0 clear whenever it proves anything). When it proves nothing: the
+  /// conditions over the whole step's boxes if the primitives move less than h relative to
+  /// each other (the boxes are then tight; cloth-funnel), then within h at t = 0 (balls on
+  /// the exact start positions, exact when they cannot tell), which makes the earliest
+  /// time 0. Returns true with result_ set when that decides the pair; otherwise the
+  /// search starts at `from`.
+  bool whole_step_decided(double& from) {
+    result_.intervals = 1;
+    if (advance(from)) return true;
+    if (from > 0) return false;
+    Truth within = Truth::unknown;
+    if (speed_ <= h_) {
+      within = conditions_(BoxedStep{m_, detail::ball_hull(0, 1)}, h2_, never());
+    }
+    if (within == Truth::unknown) within = within_at(0.0, Reach::h) ? Truth::yes : Truth::unknown;
+    if (within == Truth::yes) hit(0.0, false);
+    return within != Truth::unknown;
+  }
+
   // Undecided intervals try the Lipschitz exclusion in balls; those at most this wide also
   // in exact rationals when the balls cannot decide (slow, and rarely decisive wider).
   static constexpr double kExactLipschitzBelow = 1.0 / 16;
@@ -317,48 +321,6 @@ double fastest_relative(const StepPoints& m, std::initializer_list<std::pair<int
   return v * (1 + 1e-12);
 }
 
-/// An upper bound of |n(t)|² over the step for n(t) = e(t) × g(t), the cross product of two
-/// vectors between the pair's points, each linear in t (e = x_j - x_i, g = x_l - x_k).
-/// n is a quadratic whose Bernstein coefficients are e(0) × g(0), (e(0) × g(1) + e(1) ×
-/// g(0)) / 2 and e(1) × g(1); n(t) is a convex combination of them, so |n(t)| is at most
-/// the largest of their lengths. Computed in double, each is within a few ulps of |e| |g|
-/// of the exact one (the differences and the cross products round a few times), so the
-/// bound adds 1e-14 |e|max |g|max, and never exceeds |e|max |g|max, which bounds |n| too.
-double normal_bound_squared(const StepPoints& m, std::array<int, 4> ends) {
-  const auto [i, j, k, l] = ends;
-  const Vec3 e0 = m.x0[j] - m.x0[i], e1 = m.x1[j] - m.x1[i];
-  const Vec3 g0 = m.x0[l] - m.x0[k], g1 = m.x1[l] - m.x1[k];
-  const double lengths = std::sqrt(std::max(e0.squaredNorm(), e1.squaredNorm()) *
-                                   std::max(g0.squaredNorm(), g1.squaredNorm())) *
-                         (1 + 1e-12);
-  const double middle = (0.5 * (e0.cross(g1) + e1.cross(g0))).norm();
-  const double largest = std::max({e0.cross(g0).norm(), middle, e1.cross(g1).norm()}) * (1 + 1e-12);
-  const double bound = std::min(lengths, largest + 1e-14 * lengths);
-  return bound * bound * (1 + 1e-12);
-}
-
-/// Whether f(t) = det(b - a, c - a, d - a) of the four moving points (a, b, c, d) keeps one
-/// strict sign with |f(t)| > h · n_bound on the whole step (certified: the Bernstein
-/// coefficients of f with their error bounds, geometry/coplanarity_sign.hpp). f(t) is a
-/// convex combination of its Bernstein coefficients, so |f| is at least the smallest of
-/// them when they share a sign. With n_bound ≥ |n(t)| for the n for which |f| = |n · r|
-/// (r from the first primitive to the second), |f| / |n| is the distance along n, which no
-/// pair of points of the two primitives undercuts: farther than h for the whole step.
-bool certainly_apart(const StepPoints& m, double n_bound_squared, double h) {
-  double value[4], bound[4];
-  if (!detail::coplanarity_bernstein_double(m.x0, m.x1, value, bound)) return false;
-  const double sign = value[0] > 0 ? 1.0 : -1.0;
-  double smallest = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < 4; ++i) {
-    const double margin = sign * value[i] - bound[i];  // a lower bound of |coefficient|
-    if (!(margin > 0)) return false;
-    smallest = std::min(smallest, (i == 1 || i == 2) ? margin / 3 : margin);
-  }
-  // Rounded down on the left, up on the right; an overflow to infinity on the right only
-  // refuses.
-  return smallest * smallest * (1 - 1e-12) > h * h * n_bound_squared * (1 + 1e-12);
-}
-
 /// The result for a pair already within h at t = 0.
 ThicknessResult within_at_start() {
   ThicknessResult result;
@@ -372,12 +334,6 @@ ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& q, double h) {
   const StepPoints m{{q.p_t0, q.a_t0, q.b_t0, q.c_t0}, {q.p_t1, q.a_t1, q.b_t1, q.c_t1}};
   check_query(m, h, "vertex_face_ccd_within");
   if (apart_along_a_coordinate_axis(m.x0, m.x1, PairShape::vertex_face, h)) return {};
-  // p farther than h from the face's plane for the whole step (most candidates): f is
-  // n · (p - a), n = (b - a) × (c - a).
-  const StepPoints face_first{{q.a_t0, q.b_t0, q.c_t0, q.p_t0}, {q.a_t1, q.b_t1, q.c_t1, q.p_t1}};
-  if (certainly_apart(face_first, normal_bound_squared(m, {1, 2, 1, 3}), h)) {
-    return {};
-  }
   if (within_by_closest_points(m.x0, PairShape::vertex_face, h)) return within_at_start();
   const double speed = fastest_relative(m, {{0, 1}, {0, 2}, {0, 3}});
   const auto find_never = [&m] {
@@ -398,11 +354,6 @@ ThicknessResult edge_edge_ccd_within(const EdgeEdgeQuery& q, double h) {
                      {q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1}};
   check_query(m, h, "edge_edge_ccd_within");
   if (apart_along_a_coordinate_axis(m.x0, m.x1, PairShape::edge_edge, h)) return {};
-  // The lines farther than h apart for the whole step: f is ± (c - a) · n, n = (b - a) ×
-  // (d - c).
-  if (certainly_apart(m, normal_bound_squared(m, {0, 1, 2, 3}), h)) {
-    return {};
-  }
   if (within_by_closest_points(m.x0, PairShape::edge_edge, h)) return within_at_start();
   const double speed = fastest_relative(m, {{0, 2}, {0, 3}, {1, 2}, {1, 3}});
   const auto find_never = [&m] {
