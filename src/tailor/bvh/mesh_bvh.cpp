@@ -2,8 +2,8 @@
 
 #include <tbb/parallel_for.h>
 
-#include <cstddef>
 #include <algorithm>
+#include <cstddef>
 #include <numeric>
 
 #include "tailor/bvh/batch_bounds.hpp"
