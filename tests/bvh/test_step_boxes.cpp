@@ -143,8 +143,12 @@ TEST(StepBoxes, FloatBoxesHoldTheDoubleOnesAndPartOnlyWhatTheyPart) {
     }
     const bool meet = fa.overlaps(fb);
     ASSERT_EQ(meet, fb.overlaps(fa)) << trial;
-    if (!meet) ASSERT_TRUE(exact_apart(a, b)) << trial;
-    if (on_floats) ASSERT_EQ(meet, !exact_apart(a, b)) << trial;
+    if (!meet) {
+      ASSERT_TRUE(exact_apart(a, b)) << trial;
+    }
+    if (on_floats) {
+      ASSERT_EQ(meet, !exact_apart(a, b)) << trial;
+    }
     apart += !meet;
   }
   EXPECT_GT(apart, 2000);

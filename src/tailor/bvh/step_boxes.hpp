@@ -25,12 +25,14 @@ namespace tailor {
 /// may meet during the step: false when one axis keeps them apart, in one order, at both ends.
 inline bool may_meet_over_step(const FloatBox& a_start, const FloatBox& a_end,
                                const FloatBox& b_start, const FloatBox& b_end) {
-  bool apart = false;
+  // Combined without branches (unsigned: the traversal runs this for every node pair, and
+  // which way it goes is hard to predict).
+  unsigned apart = 0;
   for (int k = 0; k < 3; ++k) {
-    apart |= (a_start.max[k] < b_start.min[k]) & (a_end.max[k] < b_end.min[k]);
-    apart |= (b_start.max[k] < a_start.min[k]) & (b_end.max[k] < a_end.min[k]);
+    apart |= unsigned{a_start.max[k] < b_start.min[k]} & unsigned{a_end.max[k] < b_end.min[k]};
+    apart |= unsigned{b_start.max[k] < a_start.min[k]} & unsigned{b_end.max[k] < a_end.min[k]};
   }
-  return !apart;
+  return apart == 0;
 }
 
 /// Boxes of a moving set at the step's start and end, in float rounded outward (half the
