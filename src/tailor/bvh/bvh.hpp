@@ -15,9 +15,8 @@ namespace tailor {
 /// Binary BVH with one primitive per leaf, stored in flat arrays. Nodes are numbered in
 /// depth-first pre-order from the root 0, so every child has a larger id than its parent
 /// and refitting in decreasing id order is bottom-up. The topology is built once; boxes
-/// are refitted as primitives move. `Box` is Aabb (Bvh) or StepBox (StepBvh: boxes at
-/// both ends of a step, whose overlaps() is "may meet"); it has extend(), overlaps() and
-/// center().
+/// are refitted as primitives move. `Box` is Aabb (Bvh) or StepBox (boxes at both ends of a
+/// step, whose overlaps() is "may meet"); it has extend(), overlaps() and center().
 template <class Box>
 class BasicBvh {
  public:
@@ -119,8 +118,6 @@ class BasicBvh {
 
 /// A BVH over static boxes (or swept ones).
 using Bvh = BasicBvh<Aabb>;
-/// A BVH over boxes at both ends of a step (bvh/step_boxes.hpp).
-using StepBvh = BasicBvh<StepBox>;
 
 template <class Box>
 template <class Visit>

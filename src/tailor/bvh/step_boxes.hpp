@@ -23,8 +23,11 @@ namespace tailor {
 
 /// Whether sets A and B, with boxes `a_start`, `b_start` at t = 0 and `a_end`, `b_end` at t = 1,
 /// may meet during the step: false when one axis keeps them apart, in one order, at both ends.
-inline bool may_meet_over_step(const FloatBox& a_start, const FloatBox& a_end,
-                               const FloatBox& b_start, const FloatBox& b_end) {
+/// `Box` is any box with `min[k]` and `max[k]` per axis: FloatBox (the trees), or exact double
+/// bounds (the primitive boxes of the low level).
+template <class Box>
+bool may_meet_over_step(const Box& a_start, const Box& a_end, const Box& b_start,
+                        const Box& b_end) {
   // Combined without branches (unsigned: the traversal runs this for every node pair, and
   // which way it goes is hard to predict).
   unsigned apart = 0;
@@ -36,7 +39,8 @@ inline bool may_meet_over_step(const FloatBox& a_start, const FloatBox& a_end,
 }
 
 /// Boxes of a moving set at the step's start and end, in float rounded outward (half the
-/// memory of double boxes): the box type of StepBvh, whose overlaps() is may_meet_over_step().
+/// memory of double boxes): the box type of StepFeatureBoxTrees' trees, whose overlaps() is
+/// may_meet_over_step().
 /// Boxes grown by h / 2 each that cannot meet keep every point of one set more than h from
 /// every point of the other for the whole step (along the axis that parts them, the gap
 /// exceeds h at both ends).

@@ -6,6 +6,7 @@
 #include <array>
 #include <bit>
 
+#include "tailor/bvh/step_boxes.hpp"
 #include "tailor/candidates/batch_pair_filters.hpp"
 
 #include "tailor/candidates/triangle_plane_sides.hpp"
@@ -24,42 +25,41 @@ Corner corner(const Positions& x0, const Positions& x1, Index v) {
           x1.data() + 3 * static_cast<std::ptrdiff_t>(v)};
 }
 
-// Boxes of moving points at the step's two ends (exact: min and max of the inputs).
+// Exact bounds of moving points in one frame (min and max of the inputs).
+struct Bounds {
+  double min[3], max[3];
+};
+
+// Boxes of moving points at the step's two ends.
 struct Box {
-  double low[2][3], high[2][3];  // [frame][axis]
+  Bounds start, end;
 };
 
 Box point_box(Corner c) {
   Box box;
   for (int k = 0; k < 3; ++k) {
-    box.low[0][k] = box.high[0][k] = c.t0[k];
-    box.low[1][k] = box.high[1][k] = c.t1[k];
+    box.start.min[k] = box.start.max[k] = c.t0[k];
+    box.end.min[k] = box.end.max[k] = c.t1[k];
   }
   return box;
+}
+
+Bounds joined(const Bounds& a, const Bounds& b) {
+  Bounds bounds;
+  for (int k = 0; k < 3; ++k) {
+    bounds.min[k] = std::min(a.min[k], b.min[k]);
+    bounds.max[k] = std::max(a.max[k], b.max[k]);
+  }
+  return bounds;
 }
 
 Box joined(const Box& a, const Box& b) {
-  Box box;
-  for (int frame = 0; frame < 2; ++frame) {
-    for (int k = 0; k < 3; ++k) {
-      box.low[frame][k] = std::min(a.low[frame][k], b.low[frame][k]);
-      box.high[frame][k] = std::max(a.high[frame][k], b.high[frame][k]);
-    }
-  }
-  return box;
+  return {joined(a.start, b.start), joined(a.end, b.end)};
 }
 
-// Whether two primitives may meet during the step: not when one axis keeps their boxes
-// apart, in one order, at both ends (the argument of bvh/step_boxes.hpp: each point's
-// coordinate difference is linear in t, positive at both ends). Keeps every pair whose
-// swept boxes overlap apart too.
+// Whether two primitives may meet during the step (bvh/step_boxes.hpp, on exact bounds).
 bool may_meet(const Box& a, const Box& b) {
-  bool apart = false;
-  for (int k = 0; k < 3; ++k) {
-    apart |= (a.high[0][k] < b.low[0][k]) & (a.high[1][k] < b.low[1][k]);
-    apart |= (b.high[0][k] < a.low[0][k]) & (b.high[1][k] < a.low[1][k]);
-  }
-  return !apart;
+  return may_meet_over_step(a.start, a.end, b.start, b.end);
 }
 
 bool contains(const Index* face, Index v) {

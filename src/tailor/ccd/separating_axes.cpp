@@ -32,14 +32,23 @@ FourPoints positions_at(const FourPoints& x0, const FourPoints& x1, double t) {
   return x;
 }
 
+/// From the first primitive's point to the second's: p to a + first (b - a) + second (c - a)
+/// (vertex-face, points p, a, b, c), or a + first (b - a) to c + second (d - c) (edge-edge).
+Vec3 difference_at(const FourPoints& x, PairShape shape, double first, double second) {
+  if (shape == PairShape::vertex_face) {
+    return x[1] + first * (x[2] - x[1]) + second * (x[3] - x[1]) - x[0];
+  }
+  return (x[2] + second * (x[3] - x[2])) - (x[0] + first * (x[1] - x[0]));
+}
+
 /// From the first primitive's closest point to the second's at t.
 Vec3 closest_direction(const FourPoints& x, PairShape shape) {
   if (shape == PairShape::vertex_face) {
     const Vec3 w = closest_point_barycentric(x[0], x[1], x[2], x[3]);
-    return x[1] + w[1] * (x[2] - x[1]) + w[2] * (x[3] - x[1]) - x[0];
+    return difference_at(x, shape, w[1], w[2]);
   }
   const auto [s, u] = closest_segment_parameters(x[0], x[1], x[2], x[3]);
-  return (x[2] + u * (x[3] - x[2])) - (x[0] + s * (x[1] - x[0]));
+  return difference_at(x, shape, s, u);
 }
 
 /// Lower bounds of u · d_k at t = 0 (`start`) and t = 1 (`end`), one per difference.
@@ -67,11 +76,10 @@ std::optional<Vec3> witness_difference(const FourPoints& x, PairShape shape) {
     constexpr double kShrink = 1 - 0x1p-50;
     const double wb = std::max(0.0, w[1]) * kShrink, wc = std::max(0.0, w[2]) * kShrink;
     if (!(wb + wc <= 1 - 0x1p-51)) return std::nullopt;
-    return x[1] + wb * (x[2] - x[1]) + wc * (x[3] - x[1]) - x[0];
+    return difference_at(x, shape, wb, wc);
   }
   const auto [s, u] = closest_segment_parameters(x[0], x[1], x[2], x[3]);
-  const double sc = std::clamp(s, 0.0, 1.0), uc = std::clamp(u, 0.0, 1.0);
-  return (x[2] + uc * (x[3] - x[2])) - (x[0] + sc * (x[1] - x[0]));
+  return difference_at(x, shape, std::clamp(s, 0.0, 1.0), std::clamp(u, 0.0, 1.0));
 }
 
 /// The sum of all |coordinates| of a configuration.
