@@ -94,34 +94,58 @@ class SurfaceSplitter {
   SurfaceSplitter(const FaceGraph& graph, std::span<const Vec3> centers)
       : m_graph(graph), m_centers(centers), m_state(centers.size(), -1) {}
 
-  // Reorders `range` so that its first `returned` faces form the left child. `task` is
-  // unique among all splits (the node id).
-  Index split(std::span<Index> range, Index task, SplitScratch& scratch) const {
+  /// How a split divided its range.
+  struct Split {
+    Index left;          ///< the first `left` faces of the range form the left child
+    bool left_is_patch;  ///< ...in breadth-first order of their patch from the first
+  };
+
+  // Reorders `range` into its two children. `task` is unique among all splits (the node
+  // id). `is_patch`: the range is one patch listed in breadth-first order from its first
+  // face (the left child of a one-patch split), so its components are already known.
+  Split split(std::span<Index> range, Index task, bool is_patch, SplitScratch& scratch) const {
     // A face's state in this split: 3 task (in the range), + 1 (reached by the first
     // pass), + 2 (by the second). One array, one access per neighbour.
     const Index in_range = 3 * task, first_pass = in_range + 1, second_pass = in_range + 2;
-    for (Index f : range) std::atomic_ref<Index>(m_state[f]).store(in_range, kRelaxed);
-    // Components of the range (breadth-first, in range order).
+    const Index half = static_cast<Index>(range.size()) / 2;
+    Index far = range.back();
+    if (is_patch) {
+      for (Index f : range) std::atomic_ref<Index>(m_state[f]).store(first_pass, kRelaxed);
+      scratch.queue.resize(range.size());
+    } else {
+      for (Index f : range) std::atomic_ref<Index>(m_state[f]).store(in_range, kRelaxed);
+      if (!find_components(range, in_range, first_pass, scratch)) {
+        return {split_components(range, half, scratch), false};
+      }
+      far = scratch.queue[range.size() - 1];
+    }
+    // One patch: breadth-first from a peripheral face (the last one the first pass
+    // reached); the first half goes left. A prefix of a breadth-first order is the
+    // breadth-first order of the prefix's patch from the same face (every face's
+    // breadth-first parent comes before it), so the left child is a patch in that order.
+    const Index tail = visit_from(far, first_pass, second_pass, scratch.queue.data(), 0);
+    std::copy(scratch.queue.begin(), scratch.queue.begin() + tail, range.begin());
+    return {half, true};
+  }
+
+ private:
+  static constexpr std::memory_order kRelaxed = std::memory_order_relaxed;
+
+  // Lists the range's components breadth-first, in range order, into the scratch queue
+  // (moving its faces from `in_range` to `reached`); true when there is only one.
+  bool find_components(std::span<const Index> range, Index in_range, Index reached,
+                       SplitScratch& scratch) const {
     scratch.queue.resize(range.size());
     scratch.component_starts.clear();
     Index tail = 0;
     for (Index f : range) {
       if (m_state[f] != in_range) continue;
       scratch.component_starts.push_back(tail);
-      tail = visit_from(f, in_range, first_pass, scratch.queue.data(), tail);
+      tail = visit_from(f, in_range, reached, scratch.queue.data(), tail);
     }
     scratch.component_starts.push_back(tail);
-    const Index half = static_cast<Index>(range.size()) / 2;
-    if (scratch.component_starts.size() > 2) return split_components(range, half, scratch);
-    // One patch: breadth-first from a peripheral face; the first half goes left.
-    const Index far = scratch.queue[tail - 1];
-    tail = visit_from(far, first_pass, second_pass, scratch.queue.data(), 0);
-    std::copy(scratch.queue.begin(), scratch.queue.begin() + tail, range.begin());
-    return half;
+    return scratch.component_starts.size() == 2;
   }
-
- private:
-  static constexpr std::memory_order kRelaxed = std::memory_order_relaxed;
 
   // Writes to queue[tail...] every face in state `from` reachable from `start` through
   // such faces, moving them to state `to`; returns the new tail. A neighbour outside the
@@ -193,42 +217,48 @@ class SurfaceLayoutBuilder {
                        BvhLayout& layout)
       : m_splitter(splitter), m_order(order), m_layout(layout) {}
 
-  void build(Index node, Index first, Index count) {
-    if (count < kParallelBelow) return build_sequential(node, first, count);
-    const Index left = split(node, first, count, m_scratch.local());
-    tbb::parallel_invoke([&] { build(node + 1, first, left); },
+  void build(Index node, Index first, Index count, bool is_patch = false) {
+    if (count < kParallelBelow) return build_sequential(node, first, count, is_patch);
+    const SurfaceSplitter::Split split =
+        split_node(node, first, count, is_patch, m_scratch.local());
+    const Index left = split.left;
+    tbb::parallel_invoke([&] { build(node + 1, first, left, split.left_is_patch); },
                          [&] { build(node + 2 * left, first + left, count - left); });
   }
 
  private:
   static constexpr Index kParallelBelow = 2048;
 
-  // Records node's count and right child (or primitive); returns the left child's size.
-  Index split(Index node, Index first, Index count, SplitScratch& scratch) {
+  // Records node's count and right child (or primitive); returns the split.
+  SurfaceSplitter::Split split_node(Index node, Index first, Index count, bool is_patch,
+                                    SplitScratch& scratch) {
     m_layout.count[node] = count;
     if (count == 1) {
       m_layout.right[node] = m_order[first];
-      return 0;
+      return {0, false};
     }
     const std::span<Index> range(m_order.data() + first, static_cast<std::size_t>(count));
-    const Index left = m_splitter.split(range, node, scratch);
-    m_layout.right[node] = node + 2 * left;
-    return left;
+    const SurfaceSplitter::Split split = m_splitter.split(range, node, is_patch, scratch);
+    m_layout.right[node] = node + 2 * split.left;
+    return split;
   }
 
-  void build_sequential(Index node, Index first, Index count) {
+  void build_sequential(Index node, Index first, Index count, bool is_patch) {
     struct Task {
       Index node, first, count;
+      bool is_patch;
     };
     SplitScratch& scratch = m_scratch.local();
-    std::vector<Task> stack{{node, first, count}};
+    std::vector<Task> stack{{node, first, count, is_patch}};
     while (!stack.empty()) {
       const Task task = stack.back();
       stack.pop_back();
-      const Index left = split(task.node, task.first, task.count, scratch);
+      const SurfaceSplitter::Split split =
+          split_node(task.node, task.first, task.count, task.is_patch, scratch);
       if (task.count == 1) continue;
-      stack.push_back({task.node + 2 * left, task.first + left, task.count - left});
-      stack.push_back({task.node + 1, task.first, left});
+      const Index left = split.left;
+      stack.push_back({task.node + 2 * left, task.first + left, task.count - left, false});
+      stack.push_back({task.node + 1, task.first, left, split.left_is_patch});
     }
   }
 

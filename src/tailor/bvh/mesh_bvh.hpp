@@ -39,6 +39,10 @@ namespace tailor {
 /// low level).
 class MeshBvh {
  public:
+  /// Subtrees of fewer faces are refitted as groups and keep at most one mask, at their
+  /// root (see the class comment).
+  static constexpr Index kGroupFaces = 16;
+
   MeshBvh() = default;
   /// Builds over `faces` (mesh face ids), or over every face when `faces` is empty.
   MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector<Index> faces = {});
@@ -108,6 +112,9 @@ class MeshBvh {
   Index num_masks() const { return static_cast<Index>(m_masks.size()); }
 
  private:
+  static_assert(kGroupFaces <= MovingTriangleBatch::kCapacity + 1);
+  static_assert(2 * kGroupFaces - 3 <= 32);
+
   // Which nodes root a group (refitted from its faces) and which a parallel task.
   struct Roles {
     std::vector<char> group_root, task_root;
@@ -119,10 +126,6 @@ class MeshBvh {
   Roles mark_roles();
   void assign_slots(const TriangleMesh& mesh, const Roles& roles);
   void index_tasks(const Roles& roles);
-
-  static constexpr Index kGroupFaces = 16;
-  static_assert(kGroupFaces <= MovingTriangleBatch::kCapacity + 1);
-  static_assert(2 * kGroupFaces - 3 <= 32);
 
   // Aligned to its size, so that no record straddles two cache lines (malloc aligns large
   // arrays to 16 bytes only). Each box is followed by eight bytes that write_group_boxes()

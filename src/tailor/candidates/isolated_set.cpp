@@ -32,15 +32,6 @@ bool all_share_vertex(const Corners& corners, std::span<const Corners> around) {
   return true;
 }
 
-// True when every face of `faces` shares a vertex with every face of `around`.
-bool all_share_vertex(const TriangleMesh& mesh, std::span<const Index> faces,
-                      std::span<const Corners> around) {
-  for (Index f : faces) {
-    if (!all_share_vertex(corners_of(mesh, f), around)) return false;
-  }
-  return true;
-}
-
 // Per-thread work space, reused from one vertex or edge to the next.
 struct Scratch {
   std::vector<Index> near, candidates;
@@ -111,10 +102,12 @@ void add_edge_orphans(const TriangleMesh& mesh, Index e1, std::vector<EdgeEdgePa
   // holds a, or b, or else every apex c_i. So G is a face around a, around b, or around
   // c_1 holding every other apex; e2 is an edge of G.
   scratch.candidates.clear();
-  const auto try_partner = [&](Index e2) {
-    if (all_share_vertex(mesh, mesh.edge_faces(e2), scratch.around)) {
-      scratch.candidates.push_back(e2);
+  // `known`: a face of e2 already known to share a vertex with every face of e1.
+  const auto try_partner = [&](Index e2, Index known) {
+    for (Index g : mesh.edge_faces(e2)) {
+      if (g != known && !all_share_vertex(corners_of(mesh, g), scratch.around)) return;
     }
+    scratch.candidates.push_back(e2);
   };
   // Around a (b): the one edge of G away from a (b), edge (j + 1) of G when a is its
   // corner j, if it avoids the other end too.
@@ -125,7 +118,7 @@ void add_edge_orphans(const TriangleMesh& mesh, Index e1, std::vector<EdgeEdgePa
       const int j = corners[0] == end ? 0 : corners[1] == end ? 1 : 2;
       const Index e2 = mesh.face_edges(g)[(j + 1) % 3];
       if (e2 > e1 && corners[(j + 1) % 3] != other_end && corners[(j + 2) % 3] != other_end) {
-        try_partner(e2);
+        try_partner(e2, g);  // g holds `end`, a corner of every face of e1
       }
     }
   }
@@ -140,7 +133,7 @@ void add_edge_orphans(const TriangleMesh& mesh, Index e1, std::vector<EdgeEdgePa
     for (const Corners& f : scratch.around) holds_every_apex &= has_vertex(corners, apex(f));
     if (!holds_every_apex) continue;  // faces around a or b are done above
     for (Index e2 : mesh.face_edges(g)) {
-      if (e2 > e1) try_partner(e2);  // G avoids a and b, so its edges do
+      if (e2 > e1) try_partner(e2, g);  // G avoids a and b, so its edges do; it holds every apex
     }
   }
   append_sorted(scratch.candidates, e1, out);

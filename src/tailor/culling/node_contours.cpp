@@ -22,6 +22,8 @@ struct LoopBuffer {
   };
   std::vector<Index> vertices;
   std::vector<Loop> loops;
+  // Per vertex: the successor on the loop being recorded, valid where stamp is its slot.
+  std::vector<Index> next, stamp;
 };
 
 // Builds bottom-up; subtrees of more than kParallelAbove faces build their two children
@@ -37,15 +39,8 @@ struct ContourBuilder {
   // the patch is not edge-manifold or not consistently oriented.
   std::vector<HalfEdge> build(Index node, bool& valid) {
     std::vector<HalfEdge> boundary;
-    if (bvh.is_leaf(node)) {
-      const Index f = bvh.leaf_face(node);
-      const auto edges = mesh.face_edges(f);
-      for (int i = 0; i < 3; ++i) {
-        if (mesh.edge_faces(edges[i]).size() > 2) valid = false;  // non-manifold edge
-        boundary.push_back({edges[i], mesh.faces()(f, i), mesh.faces()(f, (i + 1) % 3)});
-      }
-      std::sort(boundary.begin(), boundary.end(),
-                [](const HalfEdge& a, const HalfEdge& b) { return a.edge < b.edge; });
+    if (bvh.size(node) < MeshBvh::kGroupFaces) {
+      boundary = group_boundary(node, valid);
     } else {
       bool left_valid = true, right_valid = true;
       std::vector<HalfEdge> left, right;
@@ -78,23 +73,61 @@ struct ContourBuilder {
     return boundary;
   }
 
-  // Stores the loop if the half-edges form exactly one cycle visiting each vertex once.
-  void record_loop(Index slot, std::vector<HalfEdge> half_edges) {
-    if (half_edges.size() < 3) return;
-    std::sort(half_edges.begin(), half_edges.end(),
-              [](const HalfEdge& a, const HalfEdge& b) { return a.from < b.from; });
-    for (std::size_t k = 1; k < half_edges.size(); ++k) {
-      if (half_edges[k].from == half_edges[k - 1].from) return;  // vertex visited twice
+  // The boundary of a node of fewer than kGroupFaces faces (a group or a node inside one:
+  // none below it keeps a mask) straight from its faces' half-edges, without a vector per
+  // node: an edge listed twice is interior, and its two faces must traverse it in
+  // opposite directions.
+  std::vector<HalfEdge> group_boundary(Index node, bool& valid) const {
+    std::vector<HalfEdge> half_edges;
+    half_edges.reserve(3 * static_cast<std::size_t>(bvh.size(node)));
+    for (Index n = node; n < node + 2 * bvh.size(node) - 1; ++n) {
+      if (!bvh.is_leaf(n)) continue;
+      const Index f = bvh.leaf_face(n);
+      const auto edges = mesh.face_edges(f);
+      for (int i = 0; i < 3; ++i) {
+        if (mesh.edge_faces(edges[i]).size() > 2) valid = false;  // non-manifold edge
+        half_edges.push_back({edges[i], mesh.faces()(f, i), mesh.faces()(f, (i + 1) % 3)});
+      }
     }
-    auto next = [&](Index v) -> Index {
-      auto it = std::lower_bound(half_edges.begin(), half_edges.end(), v,
-                                 [](const HalfEdge& h, Index x) { return h.from < x; });
-      return (it == half_edges.end() || it->from != v) ? -1 : it->to;
-    };
+    std::sort(half_edges.begin(), half_edges.end(),
+              [](const HalfEdge& a, const HalfEdge& b) { return a.edge < b.edge; });
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < half_edges.size(); ++i) {
+      if (i + 1 < half_edges.size() && half_edges[i + 1].edge == half_edges[i].edge) {
+        if (half_edges[i].from != half_edges[i + 1].to) valid = false;
+        ++i;  // interior: both copies go
+      } else {
+        half_edges[kept++] = half_edges[i];
+      }
+    }
+    half_edges.resize(kept);
+    return half_edges;
+  }
+
+  // Stores the loop if the half-edges form exactly one cycle visiting each vertex once.
+  // The successor of each vertex goes in the thread's per-vertex table, stamped with the
+  // slot (unique to this node), so nothing is cleared or sorted.
+  void record_loop(Index slot, const std::vector<HalfEdge>& half_edges) {
+    if (half_edges.size() < 3) return;
     LoopBuffer& buffer = buffers.local();
+    if (buffer.stamp.empty()) {
+      buffer.stamp.assign(static_cast<std::size_t>(mesh.num_vertices()), -1);
+      buffer.next.resize(static_cast<std::size_t>(mesh.num_vertices()));
+    }
+    for (const HalfEdge& h : half_edges) {
+      if (buffer.stamp[h.from] == slot) return;  // vertex visited twice
+      buffer.stamp[h.from] = slot;
+      buffer.next[h.from] = h.to;
+    }
+    const auto next = [&](Index v) -> Index {
+      return buffer.stamp[v] == slot ? buffer.next[v] : -1;
+    };
     std::vector<Index>& vertices = buffer.vertices;
     const std::int64_t start_at = static_cast<std::int64_t>(vertices.size());
-    const Index start = half_edges.front().from;
+    const Index start =
+        std::min_element(half_edges.begin(), half_edges.end(),
+                         [](const HalfEdge& a, const HalfEdge& b) { return a.from < b.from; })
+            ->from;
     Index v = start;
     std::size_t steps = 0;
     do {
