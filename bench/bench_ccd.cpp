@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "naive_ccd.hpp"
+#include "query_sets.hpp"
 #include "support/degenerate_ccd_queries.hpp"
 #include "tailor/ccd/ccd.hpp"
 #include "tailor/ccd/ccd_double.hpp"
@@ -37,58 +38,6 @@
 
 namespace tailor {
 namespace {
-
-struct QuerySet {
-  std::vector<VertexFaceQuery> vf;
-  std::vector<EdgeEdgeQuery> ee;
-  std::vector<bool> vf_truth, ee_truth;
-  std::size_t size() const { return vf.size() + ee.size(); }
-};
-
-const std::string kData = TAILOR_DATA_DIR;
-const char* kErleben[] = {
-    "cube-cliff-edges", "cube-internal-edges", "sliding-spike", "sliding-wedge", "spike-crack",
-    "spike-hole",       "spike-wedge",         "spikes",        "wedge-crack",   "wedges"};
-
-void append(QuerySet& s, const std::string& path, const std::string& truth_json = "") {
-  CcdQueryFile f = read_ccd_queries(path);
-  std::vector<bool> truth = truth_json.empty() ? f.truth : read_ccd_truth_json(truth_json);
-  if (f.kind == CcdQueryKind::vertex_face) {
-    s.vf.insert(s.vf.end(), f.vertex_face.begin(), f.vertex_face.end());
-    s.vf_truth.insert(s.vf_truth.end(), truth.begin(), truth.end());
-  } else {
-    s.ee.insert(s.ee.end(), f.edge_edge.begin(), f.edge_edge.end());
-    s.ee_truth.insert(s.ee_truth.end(), truth.begin(), truth.end());
-  }
-}
-
-QuerySet funnel() {
-  QuerySet r;
-  const std::string d = kData + "/cloth-funnel";
-  append(r, d + "/queries/227vf.csv", d + "/mma_bool/227vf_mma_bool.json");
-  append(r, d + "/queries/227ee.csv", d + "/mma_bool/227ee_mma_bool.json");
-  return r;
-}
-
-QuerySet erleben() {
-  QuerySet r;
-  for (const char* name : kErleben) {
-    const std::string d = kData + "/ccd-queries/erleben-" + name;
-    append(r, d + "/vertex-face/data_0_0.csv");
-    append(r, d + "/edge-edge/data_0_0.csv");
-  }
-  return r;
-}
-
-QuerySet unit_tests() {
-  QuerySet r;
-  const std::string d = kData + "/ccd-queries/unit-tests";
-  for (const char* f : {"vertex-face/data_0_0.csv", "vertex-face/data_0_1.csv",
-                        "edge-edge/data_0_0.csv", "edge-edge/data_0_1.csv"}) {
-    append(r, d + "/" + f);
-  }
-  return r;
-}
 
 /// The VF and EE pairs the detector sends to the CCD in the folded-cloth step (the same
 /// pairs as `tailor detect --dump-queries`).

@@ -397,17 +397,27 @@ void PrimitivePairGenerator::clear_pairs() {
   }
 }
 
+void PrimitivePairGenerator::prefetch_ahead(std::span<const TrianglePair> ctps, std::size_t first,
+                                            std::size_t end) const {
+  // CTPs come in traversal order, their faces in no order of memory: the records of a
+  // chunk's faces are fetched while the triangle filter runs on it.
+  for (std::size_t i = first; i < std::min(end, first + kChunk); ++i) {
+    __builtin_prefetch(&m_assignment.face_features(ctps[i].first));
+    __builtin_prefetch(&m_assignment.face_features(ctps[i].second));
+  }
+}
+
 void PrimitivePairGenerator::add_triangle_pairs(std::span<const TrianglePair> ctps,
                                                 const Positions& x0, const Positions& x1,
                                                 const LowLevelOptions& options) {
   const Stages stages(*m_mesh, m_assignment, x0, x1, options);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ctps.size(), 512), [&](const auto& r) {
     ThreadOutput& local = m_outputs.local();
-    constexpr std::size_t kChunk = 64;
     std::array<TrianglePairSides, kChunk> sides{};
     for (std::size_t first = r.begin(); first < r.end(); first += kChunk) {
       const std::size_t count = std::min(kChunk, r.end() - first);
       const std::span<const TrianglePair> chunk = ctps.subspan(first, count);
+      prefetch_ahead(ctps, first, r.end());
       if (options.triangle_filter) {
         triangle_pair_sides(m_mesh->faces(), x0, x1, chunk, std::span(sides.data(), count));
       }

@@ -101,6 +101,11 @@ class PrimitivePairGenerator {
   };
 
  private:
+  // CTPs filtered and expanded together (the triangle filter's batch).
+  static constexpr std::size_t kChunk = 64;
+
+  // Prefetches the feature records that expanding the chunk at ctps[first] reads.
+  void prefetch_ahead(std::span<const TrianglePair> ctps, std::size_t first, std::size_t end) const;
   // Runs the filters on every thread's waiting pairs.
   void flush_batches(const LowLevelOptions& options);
 
