@@ -1,6 +1,6 @@
 // The isolated set equals its definition, enumerated by brute force over every feature
 // pair, on meshes with few and many orphans (regular grids, thin tubes, poles of high
-// valence, non-manifold edges, bow-ties, a lone triangle).
+// valence, non-manifold edges, bow-ties, fins, a lone triangle).
 
 #include "tailor/candidates/isolated_set.hpp"
 
@@ -68,6 +68,19 @@ TEST(IsolatedSet, EqualsItsDefinitionByBruteForce) {
     m.emplace_back("non-manifold",
                    mesh_of(10, {{0, 1, 2}, {0, 1, 3}, {0, 1, 4}, {0, 5, 6}, {7, 8, 2}, {2, 3, 4}}));
     m.emplace_back("lone triangle", mesh_of(3, {{0, 1, 2}}));
+    // Fins: a third face on inner edges of a grid (the faces across an edge that do not
+    // touch another edge's faces keep the two from being orphans).
+    MeshData fins = make_grid(5, 5, 1.0, 1.0);
+    const Index grid_faces = static_cast<Index>(fins.faces.rows());
+    for (Index f = 3, k = 0; f < grid_faces; f += 7, ++k) {
+      const Index top = static_cast<Index>(fins.vertices.rows());
+      fins.vertices.conservativeResize(top + 1, 3);
+      fins.vertices.row(top) << 0.1 * k, 0.5, 1.0;
+      fins.faces.conservativeResize(fins.faces.rows() + 1, 3);
+      fins.faces.row(fins.faces.rows() - 1) << fins.faces(f, k % 3), fins.faces(f, (k + 1) % 3),
+          top;
+    }
+    m.emplace_back("grid with fins", mesh_of(fins));
     return m;
   }();
   std::size_t total_vf = 0, total_ee = 0;

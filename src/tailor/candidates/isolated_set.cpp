@@ -32,9 +32,53 @@ bool all_share_vertex(const Corners& corners, std::span<const Corners> around) {
   return true;
 }
 
+// Face g seen from its corner v: g's other corners, the edge of g opposite v and the faces
+// across that edge. Each vertex's faces and edges are read by every feature around it:
+// gathered once, the enumeration below reads them in sequence.
+struct LinkEntry {
+  Index face;           // g
+  Index opposite_edge;  // the edge of g that avoids v
+  Index other[2];       // g's corners after v, in g's order
+  Corners far;          // the face across opposite_edge, when far_faces is 1
+  Index far_faces;      // faces of opposite_edge other than g (0: a boundary edge)
+};
+
+class Links {
+ public:
+  explicit Links(const TriangleMesh& mesh) : m_offsets(mesh.num_vertices() + 1, 0) {
+    for (Index v = 0; v < mesh.num_vertices(); ++v) {
+      m_offsets[v + 1] = m_offsets[v] + static_cast<Index>(mesh.vertex_faces(v).size());
+    }
+    m_entries.resize(static_cast<std::size_t>(m_offsets.back()));
+    tbb::parallel_for(Index{0}, mesh.num_vertices(), [&](Index v) {
+      Index slot = m_offsets[v];
+      for (Index g : mesh.vertex_faces(v)) m_entries[slot++] = entry(mesh, v, g);
+    });
+  }
+  std::span<const LinkEntry> of(Index v) const {
+    return {m_entries.data() + m_offsets[v],
+            static_cast<std::size_t>(m_offsets[v + 1] - m_offsets[v])};
+  }
+
+ private:
+  static LinkEntry entry(const TriangleMesh& mesh, Index v, Index g) {
+    const Corners corners = corners_of(mesh, g);
+    const int j = corners[0] == v ? 0 : corners[1] == v ? 1 : 2;
+    LinkEntry e{
+        g, mesh.face_edges(g)[(j + 1) % 3], {corners[(j + 1) % 3], corners[(j + 2) % 3]}, {}, 0};
+    const auto across = mesh.edge_faces(e.opposite_edge);
+    e.far_faces = static_cast<Index>(across.size()) - 1;
+    if (e.far_faces == 1) e.far = corners_of(mesh, across[0] == g ? across[1] : across[0]);
+    return e;
+  }
+
+  std::vector<Index> m_offsets;
+  std::vector<LinkEntry> m_entries;
+};
+
 // Per-thread work space, reused from one vertex or edge to the next.
 struct Scratch {
-  std::vector<Index> near, candidates;
+  std::vector<Index> candidates;
   std::vector<Corners> around;
 };
 
@@ -70,21 +114,20 @@ void append_sorted(std::vector<Index>& found, Index feature, std::vector<Pair>& 
 }
 
 // Orphan faces g of vertex v, in increasing order.
-void add_vertex_orphans(const TriangleMesh& mesh, Index v, std::vector<VertexFacePair>& out,
+void add_vertex_orphans(const Links& links, Index v, std::vector<VertexFacePair>& out,
                         Scratch& scratch) {
-  const auto around = mesh.vertex_faces(v);
+  const auto around = links.of(v);
   if (around.empty()) return;  // unreferenced vertices are not part of the surface
   scratch.around.clear();
-  for (Index f : around) scratch.around.push_back(corners_of(mesh, f));
+  for (const LinkEntry& l : around) scratch.around.push_back({v, l.other[0], l.other[1]});
   // An orphan face g (v not in g) shares a vertex with the first face around v, (v, x, y),
   // so it is a face around x or around y.
   scratch.candidates.clear();
-  for (Index w : scratch.around[0]) {
-    if (w == v) continue;
-    for (Index g : mesh.vertex_faces(w)) {
-      const Corners corners = corners_of(mesh, g);
+  for (const Index w : around[0].other) {
+    for (const LinkEntry& l : links.of(w)) {
+      const Corners corners{w, l.other[0], l.other[1]};
       if (!has_vertex(corners, v) && all_share_vertex(corners, scratch.around)) {
-        scratch.candidates.push_back(g);
+        scratch.candidates.push_back(l.face);
       }
     }
   }
@@ -92,34 +135,36 @@ void add_vertex_orphans(const TriangleMesh& mesh, Index v, std::vector<VertexFac
 }
 
 // Orphan partners e2 > e1 of edge e1 = (a, b), in increasing order.
-void add_edge_orphans(const TriangleMesh& mesh, Index e1, std::vector<EdgeEdgePair>& out,
-                      Scratch& scratch) {
+void add_edge_orphans(const TriangleMesh& mesh, const Links& links, Index e1,
+                      std::vector<EdgeEdgePair>& out, Scratch& scratch) {
   const Index a = mesh.edges()(e1, 0), b = mesh.edges()(e1, 1);
-  const auto faces1 = mesh.edge_faces(e1);
+  // e1's faces are b's faces that hold a (edges come sorted by b: b's entries stay in
+  // cache from one edge to the next).
   scratch.around.clear();
-  for (Index f : faces1) scratch.around.push_back(corners_of(mesh, f));
+  for (const LinkEntry& l : links.of(b)) {
+    if (l.other[0] == a || l.other[1] == a) scratch.around.push_back({b, l.other[0], l.other[1]});
+  }
   // A face G of an orphan partner shares a vertex with every face (a, b, c_i) of e1: it
   // holds a, or b, or else every apex c_i. So G is a face around a, around b, or around
   // c_1 holding every other apex; e2 is an edge of G.
   scratch.candidates.clear();
-  // `known`: a face of e2 already known to share a vertex with every face of e1.
-  const auto try_partner = [&](Index e2, Index known) {
+  // Whether every face of e2 but `known` (which does) shares a vertex with every face of e1.
+  const auto others_touch = [&](Index e2, Index known) {
     for (Index g : mesh.edge_faces(e2)) {
-      if (g != known && !all_share_vertex(corners_of(mesh, g), scratch.around)) return;
+      if (g != known && !all_share_vertex(corners_of(mesh, g), scratch.around)) return false;
     }
-    scratch.candidates.push_back(e2);
+    return true;
   };
-  // Around a (b): the one edge of G away from a (b), edge (j + 1) of G when a is its
-  // corner j, if it avoids the other end too.
+  // Around a (b): the edge of G opposite a (b), if it avoids the other end too. G holds a
+  // (b), a corner of every face of e1; so do the faces across e2, or they must touch.
   for (const Index end : {a, b}) {
     const Index other_end = end == a ? b : a;
-    for (Index g : mesh.vertex_faces(end)) {
-      const Corners corners = corners_of(mesh, g);
-      const int j = corners[0] == end ? 0 : corners[1] == end ? 1 : 2;
-      const Index e2 = mesh.face_edges(g)[(j + 1) % 3];
-      if (e2 > e1 && corners[(j + 1) % 3] != other_end && corners[(j + 2) % 3] != other_end) {
-        try_partner(e2, g);  // g holds `end`, a corner of every face of e1
-      }
+    for (const LinkEntry& l : links.of(end)) {
+      if (l.opposite_edge <= e1 || l.other[0] == other_end || l.other[1] == other_end) continue;
+      const bool touch =
+          l.far_faces == 0 || (l.far_faces == 1 ? all_share_vertex(l.far, scratch.around)
+                                                : others_touch(l.opposite_edge, l.face));
+      if (touch) scratch.candidates.push_back(l.opposite_edge);
     }
   }
   const auto apex = [&](const Corners& face) {
@@ -127,13 +172,15 @@ void add_edge_orphans(const TriangleMesh& mesh, Index e1, std::vector<EdgeEdgePa
            : face[1] != a && face[1] != b ? face[1]
                                           : face[2];
   };
-  for (Index g : mesh.vertex_faces(apex(scratch.around[0]))) {
-    const Corners corners = corners_of(mesh, g);
+  const Index first_apex = apex(scratch.around[0]);
+  for (const LinkEntry& l : links.of(first_apex)) {
+    const Corners corners{first_apex, l.other[0], l.other[1]};
     bool holds_every_apex = !has_vertex(corners, a) && !has_vertex(corners, b);
     for (const Corners& f : scratch.around) holds_every_apex &= has_vertex(corners, apex(f));
     if (!holds_every_apex) continue;  // faces around a or b are done above
-    for (Index e2 : mesh.face_edges(g)) {
-      if (e2 > e1) try_partner(e2, g);  // G avoids a and b, so its edges do; it holds every apex
+    for (Index e2 : mesh.face_edges(l.face)) {
+      // G avoids a and b, so its edges do; G holds every apex.
+      if (e2 > e1 && others_touch(e2, l.face)) scratch.candidates.push_back(e2);
     }
   }
   append_sorted(scratch.candidates, e1, out);
@@ -158,14 +205,15 @@ std::pair<Index, Index> first_disjoint_face_pair(const TriangleMesh& mesh, Index
 }
 
 IsolatedSet IsolatedSet::build(const TriangleMesh& mesh) {
+  const Links links(mesh);
   IsolatedSet set;
   set.vertex_face = collect_in_order<VertexFacePair>(
       mesh.num_vertices(), [&](Index v, std::vector<VertexFacePair>& out, Scratch& scratch) {
-        add_vertex_orphans(mesh, v, out, scratch);
+        add_vertex_orphans(links, v, out, scratch);
       });
   set.edge_edge = collect_in_order<EdgeEdgePair>(
       mesh.num_edges(), [&](Index e1, std::vector<EdgeEdgePair>& out, Scratch& scratch) {
-        add_edge_orphans(mesh, e1, out, scratch);
+        add_edge_orphans(mesh, links, e1, out, scratch);
       });
   return set;
 }
