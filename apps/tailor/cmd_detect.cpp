@@ -2,7 +2,10 @@
 /// `tailor detect MESH_T0 MESH_T1`: the self-collisions of one step.
 
 #include <fmt/format.h>
+#include <tbb/parallel_invoke.h>
+#include <tbb/task_arena.h>
 
+#include <exception>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -73,10 +76,30 @@ void dump_queries(const std::string& prefix, const TriangleMesh& mesh, const Pos
              queries.vertex_face.size(), prefix, queries.edge_edge.size(), prefix);
 }
 
+// Both frames, read side by side (in the caller's arena). Errors as if read one after the
+// other: the first frame's first.
+std::pair<MeshData, MeshData> read_frames(const std::string& path_t0, const std::string& path_t1) {
+  MeshData t0, t1;
+  std::exception_ptr error_t0, error_t1;
+  const auto read = [](const std::string& path, MeshData& data, std::exception_ptr& error) {
+    try {
+      data = read_mesh(path);
+    } catch (...) {
+      error = std::current_exception();
+    }
+  };
+  tbb::parallel_invoke([&] { read(path_t0, t0, error_t0); }, [&] { read(path_t1, t1, error_t1); });
+  if (error_t0) std::rethrow_exception(error_t0);
+  if (error_t1) std::rethrow_exception(error_t1);
+  return {std::move(t0), std::move(t1)};
+}
+
 int run_detect(const DetectArgs& args) {
+  // Reading and the mesh's connectivity run on the threads the detection may use.
+  const int threads = args.detection.config().threads;
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   auto stage = SteadyClock::now();
-  MeshData t0 = read_mesh(args.mesh_t0);
-  MeshData t1 = read_mesh(args.mesh_t1);
+  auto [t0, t1] = arena.execute([&] { return read_frames(args.mesh_t0, args.mesh_t1); });
   if (t0.vertices.rows() != t1.vertices.rows() || t0.faces != t1.faces) {
     throw InputError(fmt::format(
         "{} and {} do not have the same topology ({} vs {} vertices, "
@@ -88,7 +111,8 @@ int run_detect(const DetectArgs& args) {
   t1.faces.resize(0, 3);
   const double read_ms = milliseconds_since(stage);
   stage = SteadyClock::now();
-  const TriangleMesh mesh(static_cast<Index>(t0.vertices.rows()), std::move(t0.faces));
+  const TriangleMesh mesh = arena.execute(
+      [&] { return TriangleMesh(static_cast<Index>(t0.vertices.rows()), std::move(t0.faces)); });
   const double mesh_ms = milliseconds_since(stage);
   fmt::print("mesh       : {} vertices, {} faces, {} edges\n", mesh.num_vertices(),
              mesh.num_faces(), mesh.num_edges());

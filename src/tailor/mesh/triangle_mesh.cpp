@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -36,12 +37,18 @@ Index find_root(std::vector<Index>& parent, Index v) {
 TriangleMesh::TriangleMesh(Index num_vertices, FaceArray faces)
     : m_num_vertices(num_vertices), m_faces(std::move(faces)) {
   validate_faces();  // errors first, so nothing below sees a bad index
-  build_edges(sorted_sides());
-  build_vertex_faces();
-  build_edge_ends();
+  // The edges and the vertices' faces do not depend on each other.
+  tbb::parallel_invoke(
+      [&] {
+        build_edges(sorted_sides());
+        build_edge_ends();
+      },
+      [&] {
+        build_vertex_faces();
+        label_components();
+      });
   record_warnings();
   build_boundary_loops();
-  label_components();
 }
 
 void TriangleMesh::validate_faces() const {
