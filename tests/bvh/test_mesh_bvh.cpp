@@ -337,5 +337,20 @@ TEST(BvhLayout, SurfaceLayoutDoesNotDependOnThreads) {
   EXPECT_EQ(parallel.count, sequential.count);
 }
 
+// The median split too: large subtrees split in parallel build the single thread's tree
+// (with ties among the centres, which the primitive ids break).
+TEST(BvhLayout, MedianSplitLayoutDoesNotDependOnThreads) {
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> coarse(0, 40);  // many equal coordinates
+  std::vector<Vec3> centers(sanitized() ? 20000 : 60000);
+  for (Vec3& c : centers) c = {coarse(rng) * 0.1, coarse(rng) * 0.2, coarse(rng) * 0.05};
+  const BvhLayout parallel = build_median_split_layout(centers);
+  BvhLayout sequential;
+  tbb::task_arena(1).execute([&] { sequential = build_median_split_layout(centers); });
+  ASSERT_EQ(parallel.num_nodes(), 2 * static_cast<Index>(centers.size()) - 1);
+  EXPECT_EQ(parallel.right, sequential.right);
+  EXPECT_EQ(parallel.count, sequential.count);
+}
+
 }  // namespace
 }  // namespace tailor

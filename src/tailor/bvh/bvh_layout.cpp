@@ -11,6 +11,74 @@
 
 namespace tailor {
 
+namespace {
+
+// Median splits of index ranges: large ranges split their two children in parallel (the
+// ranges are disjoint and each split depends only on its range's contents, so the tree
+// does not depend on scheduling), small ones run with an explicit stack (deep trees stay
+// off the call stack).
+class MedianSplitBuilder {
+ public:
+  MedianSplitBuilder(std::span<const Vec3> centers, std::vector<Index>& order, BvhLayout& layout)
+      : m_centers(centers), m_order(order), m_layout(layout) {}
+
+  void build(Index node, Index first, Index count) {
+    if (count < kParallelAbove) return build_sequential(node, first, count);
+    const Index half = split(node, first, count);
+    tbb::parallel_invoke([&] { build(node + 1, first, half); },
+                         [&] { build(node + 2 * half, first + half, count - half); });
+  }
+
+ private:
+  static constexpr Index kParallelAbove = 8192;
+
+  // Pre-order numbering: the left subtree (2·half - 1 nodes) follows its parent, the right
+  // subtree follows it. Records the node; returns the left child's size (0 for a leaf).
+  Index split(Index node, Index first, Index count) {
+    m_layout.count[node] = count;
+    const auto begin = m_order.begin() + first;
+    if (count == 1) {
+      m_layout.right[node] = *begin;
+      return 0;
+    }
+    Eigen::Array3d low = m_centers[*begin].array(), high = low;
+    for (Index i = 1; i < count; ++i) {
+      low = low.min(m_centers[begin[i]].array());
+      high = high.max(m_centers[begin[i]].array());
+    }
+    int axis = 0;
+    (high - low).maxCoeff(&axis);
+    const Index half = count / 2;
+    std::nth_element(begin, begin + half, begin + count, [&](Index a, Index b) {
+      return m_centers[a][axis] < m_centers[b][axis] ||
+             (m_centers[a][axis] == m_centers[b][axis] && a < b);
+    });
+    m_layout.right[node] = node + 2 * half;
+    return half;
+  }
+
+  void build_sequential(Index node, Index first, Index count) {
+    struct Task {
+      Index node, first, count;
+    };
+    std::vector<Task> stack{{node, first, count}};
+    while (!stack.empty()) {
+      const Task task = stack.back();
+      stack.pop_back();
+      const Index half = split(task.node, task.first, task.count);
+      if (task.count == 1) continue;
+      stack.push_back({task.node + 2 * half, task.first + half, task.count - half});
+      stack.push_back({task.node + 1, task.first, half});
+    }
+  }
+
+  std::span<const Vec3> m_centers;
+  std::vector<Index>& m_order;
+  BvhLayout& m_layout;
+};
+
+}  // namespace
+
 BvhLayout build_median_split_layout(std::span<const Vec3> centers) {
   BvhLayout layout;
   const Index n = static_cast<Index>(centers.size());
@@ -19,37 +87,7 @@ BvhLayout build_median_split_layout(std::span<const Vec3> centers) {
   layout.count.assign(static_cast<std::size_t>(2 * n - 1), 0);
   std::vector<Index> order(static_cast<std::size_t>(n));
   std::iota(order.begin(), order.end(), 0);
-
-  // Pre-order numbering with an explicit stack (deep trees stay off the call stack): the
-  // left subtree (2·half - 1 nodes) follows its parent, the right subtree follows it.
-  struct Task {
-    Index node, first, count;
-  };
-  std::vector<Task> stack{{0, 0, n}};
-  while (!stack.empty()) {
-    const Task task = stack.back();
-    stack.pop_back();
-    layout.count[task.node] = task.count;
-    const auto begin = order.begin() + task.first;
-    if (task.count == 1) {
-      layout.right[task.node] = *begin;
-      continue;
-    }
-    Eigen::Array3d low = centers[*begin].array(), high = low;
-    for (Index i = 1; i < task.count; ++i) {
-      low = low.min(centers[begin[i]].array());
-      high = high.max(centers[begin[i]].array());
-    }
-    int axis = 0;
-    (high - low).maxCoeff(&axis);
-    const Index half = task.count / 2;
-    std::nth_element(begin, begin + half, begin + task.count, [&](Index a, Index b) {
-      return centers[a][axis] < centers[b][axis] || (centers[a][axis] == centers[b][axis] && a < b);
-    });
-    layout.right[task.node] = task.node + 2 * half;
-    stack.push_back({task.node + 2 * half, task.first + half, task.count - half});
-    stack.push_back({task.node + 1, task.first, half});
-  }
+  MedianSplitBuilder(centers, order, layout).build(0, 0, n);
   return layout;
 }
 

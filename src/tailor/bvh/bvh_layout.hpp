@@ -29,7 +29,8 @@ struct BvhLayout {
 
 /// Builds top-down: each node splits its primitives at the median of their centres along
 /// the widest axis of the centres' box (ties broken by primitive id, so the tree depends
-/// only on the input). Sequential, O(n log n), with memory O(n) besides the result.
+/// only on the input). O(n log n), with memory O(n) besides the result; large subtrees are
+/// split in parallel (the same tree on any number of threads).
 BvhLayout build_median_split_layout(std::span<const Vec3> centers);
 
 /// Builds top-down over the faces `faces` of `mesh` (primitive i is faces[i], with centre
