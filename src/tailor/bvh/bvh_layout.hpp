@@ -42,7 +42,10 @@ BvhLayout build_median_split_layout(std::span<const Vec3> centers);
 ///   centres along the widest axis, when they are not connected;
 /// - otherwise into the first half of a breadth-first order over edge-adjacent faces from
 ///   a peripheral face (the last face reached from any face) and the rest: a front that
-///   sweeps the patch, leaving two patches of half the size.
+///   sweeps the patch, leaving two patches of half the size. The first half is itself one
+///   patch in breadth-first order from that peripheral face (a prefix of a breadth-first
+///   order is one of its own patch), so it is halved along the same sweep with no new
+///   search.
 /// O(n log n); subtrees are split in parallel, and the tree does not depend on scheduling.
 BvhLayout build_surface_layout(const TriangleMesh& mesh, std::span<const Index> faces,
                                std::span<const Vec3> centers);
