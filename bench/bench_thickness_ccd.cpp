@@ -158,13 +158,11 @@ void BM_ThicknessCcd(benchmark::State& state) {
   const Accuracy& a = accuracy(set, k);
   state.counters["queries"] = static_cast<double>(s.size());
   state.counters["h"] = h;
-  state.counters["within_h"] = static_cast<double>(a.within_h);
-  state.counters["confirmed"] = static_cast<double>(a.confirmed);
-  state.counters["tolerated"] = static_cast<double>(a.tolerated);
-  state.counters["unconfirmed"] = static_cast<double>(a.unconfirmed);
-  state.counters["oracle_fn"] = static_cast<double>(a.oracle_fn);
-  state.counters["toi_late"] = static_cast<double>(a.toi_late);
-  state.counters["exhausted"] = static_cast<double>(a.exhausted);
+  const std::pair<const char*, std::size_t> counts[] = {
+      {"within_h", a.within_h},       {"confirmed", a.confirmed}, {"tolerated", a.tolerated},
+      {"unconfirmed", a.unconfirmed}, {"oracle_fn", a.oracle_fn}, {"toi_late", a.toi_late},
+      {"exhausted", a.exhausted}};
+  for (const auto& [name, count] : counts) state.counters[name] = static_cast<double>(count);
   state.counters["ns_per_query"] = benchmark::Counter(
       static_cast<double>(n), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
