@@ -46,8 +46,12 @@ struct FloatBox {
   }
   /// Closed-box overlap (touching boxes overlap).
   bool overlaps(const FloatBox& b) const {
-    return (min[0] <= b.max[0]) & (b.min[0] <= max[0]) & (min[1] <= b.max[1]) &
-           (b.min[1] <= max[1]) & (min[2] <= b.max[2]) & (b.min[2] <= max[2]);
+    // Combined without branches (as unsigned: no bitwise operation on bools).
+    unsigned meet = 1;
+    for (int k = 0; k < 3; ++k) {
+      meet &= unsigned{min[k] <= b.max[k]} & unsigned{b.min[k] <= max[k]};
+    }
+    return meet != 0;
   }
 };
 

@@ -25,8 +25,7 @@ constexpr Index kPrefetchGroups = 2;
 
 }  // namespace
 
-MeshBvh::MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector<Index> faces)
-    : m_mesh(&mesh) {
+MeshBvh::MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector<Index> faces) {
   if (faces.empty()) {
     faces.resize(static_cast<std::size_t>(mesh.num_faces()));
     std::iota(faces.begin(), faces.end(), 0);

@@ -167,7 +167,6 @@ class MeshBvh {
   // Sets an inner node's boxes to the unions of its children's.
   void join_children(Index node);
 
-  const TriangleMesh* m_mesh = nullptr;
   std::vector<Node> m_nodes;
   std::vector<std::uint64_t> m_mask_bits;  // bit `node`: the node keeps a mask
   std::vector<Index> m_masks_before_word;  // masks of the nodes below 64 · word

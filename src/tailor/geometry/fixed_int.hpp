@@ -266,6 +266,12 @@ class FixedInt {
 
   __extension__ using Signed2 = __int128;
 
+// Only the first m_size limbs are ever read; the rest stay uninitialized on purpose (this
+// is the exact CCD's inner loop), which GCC's flow analysis cannot see through.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
   /// The value of a number of at most one limb (|x| < 2^64) as a 128-bit integer.
   Signed2 small() const {
     if (m_size == 0) return 0;
@@ -306,6 +312,9 @@ class FixedInt {
         for (int i = 0; i < n; ++i) to[i] = from[i];
     }
   }
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
 
   /// Sign of |a| - |b|.
   static int compare_magnitudes(const FixedInt& a, const FixedInt& b) {
