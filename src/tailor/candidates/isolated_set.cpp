@@ -43,6 +43,7 @@ struct LinkEntry {
   Index far_faces;      // faces of opposite_edge other than g (0: a boundary edge)
 };
 
+// Every vertex's link entries, in the order of its vertex_faces(), built in parallel.
 class Links {
  public:
   explicit Links(const TriangleMesh& mesh) : m_offsets(mesh.num_vertices() + 1, 0) {
