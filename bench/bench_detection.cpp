@@ -1,17 +1,21 @@
 // Per-stage cost of the self-collision detector on a procedurally crumpling cloth, from
 // 10K to 1M triangles, on the contact-heavy folded cloth (~1 collision per triangle), on
 // the dense pleated cloth (the contact density of real steps) and on cloth-ball's real
-// step, 1 and 2 threads; the refit of boxes and cones alone, for comparison.
+// step, 1 and 2 threads; the refit of boxes and cones alone, for comparison; what the
+// detector builds once per mesh, on cloth-ball.
 
 #include <benchmark/benchmark.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <string>
 
 #include "tailor/bvh/aabb.hpp"
 #include "tailor/bvh/mesh_bvh.hpp"
+#include "tailor/candidates/isolated_set.hpp"
+#include "tailor/candidates/primitive_pair_generator.hpp"
 #include "tailor/culling/contour_test.hpp"
 #include "tailor/culling/node_contours.hpp"
 #include "tailor/detection/self_collision_detector.hpp"
@@ -109,9 +113,9 @@ void BM_DetectPleatedStep(benchmark::State& state) {
               static_cast<int>(state.range(1)));
 }
 
-// cloth-ball's step 92 -> 93 (../shared/data/cloth-ball: 92,230 triangles, 113,854
-// colliding pairs), the detector built once; arg: threads.
-void BM_DetectClothBallStep(benchmark::State& state) {
+// cloth-ball's step 92 -> 93 (../shared/data/cloth-ball: 92,230 triangles, its faces in no
+// spatial order), read once; nullptr (the benchmark skipped) when the data is not there.
+const Scene* cloth_ball(benchmark::State& state) {
   static Scene s;
   if (!s.mesh) {
     const std::string dir = std::string(TAILOR_DATA_DIR) + "/cloth-ball/frames/";
@@ -123,10 +127,50 @@ void BM_DetectClothBallStep(benchmark::State& state) {
       s.x1 = std::move(m1.vertices);
     } catch (const std::exception& e) {
       state.SkipWithError(e.what());  // the reference data is not beside the repository
-      return;
+      return nullptr;
     }
   }
-  detect_step(state, s, static_cast<int>(state.range(0)));
+  return &s;
+}
+
+// cloth-ball's step (113,854 colliding pairs), the detector built once; arg: threads.
+void BM_DetectClothBallStep(benchmark::State& state) {
+  if (const Scene* s = cloth_ball(state)) detect_step(state, *s, static_cast<int>(state.range(0)));
+}
+
+// What the detector builds once per mesh, on cloth-ball, part by part (0 the BVH, 1 its
+// nodes' contours, 2 the isolated set, 3 the pair generator's feature assignment, 4 the
+// whole detector, paper preset); args: part, threads.
+void BM_ClothBallBuild(benchmark::State& state) {
+  const Scene* s = cloth_ball(state);
+  if (s == nullptr) return;
+  const int part = static_cast<int>(state.range(0));
+  tbb::task_arena arena(static_cast<int>(state.range(1)));
+  const MeshBvh bvh = arena.execute([&] { return MeshBvh(*s->mesh, s->x0); });
+  DetectionConfig config = DetectionConfig::preset("paper");
+  config.threads = static_cast<int>(state.range(1));
+  for (auto _ : state) {
+    arena.execute([&] {
+      switch (part) {
+        case 0:
+          benchmark::DoNotOptimize(MeshBvh(*s->mesh, s->x0));
+          break;
+        case 1:
+          benchmark::DoNotOptimize(NodeContours(*s->mesh, bvh));
+          break;
+        case 2:
+          benchmark::DoNotOptimize(IsolatedSet::build(*s->mesh));
+          break;
+        case 3:
+          benchmark::DoNotOptimize(PrimitivePairGenerator(*s->mesh));
+          break;
+        default:
+          benchmark::DoNotOptimize(SelfCollisionDetector(*s->mesh, s->x0, config));
+      }
+    });
+  }
+  static const char* names[] = {"bvh", "contours", "isolated set", "generator", "detector"};
+  state.SetLabel(names[std::min(part, 4)]);
 }
 
 // Refitting swept boxes and direction masks, boxes only, or masks only (what a step whose
@@ -242,6 +286,11 @@ BENCHMARK(BM_DetectClothBallStep)
     ->Arg(1)
     ->Arg(2)
     ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_ClothBallBuild)
+    ->ArgsProduct({{0, 1, 2, 3, 4}, {1, 2}})
+    ->ArgNames({"part", "threads"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(BM_RefitOnly)->Apply(sizes);
