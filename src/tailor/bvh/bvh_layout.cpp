@@ -9,90 +9,118 @@
 #include <tbb/parallel_invoke.h>
 
 namespace tailor {
-
 namespace {
 
-// Median splits of index ranges: large ranges split their two children in parallel (the
-// ranges are disjoint and each split depends only on its range's contents, so the tree
-// does not depend on scheduling), small ones run with an explicit stack (deep trees stay
-// off the call stack).
-class MedianSplitBuilder {
- public:
-  MedianSplitBuilder(std::span<const Vec3> centers, std::vector<Index>& order, BvhLayout& layout)
-      : m_centers(centers), m_order(order), m_layout(layout) {}
+// How a split divided its range.
+struct Split {
+  Index left;                  // the first `left` primitives of the range form the left child
+  bool left_is_patch = false;  // ...one patch in breadth-first order from their first face
+};
 
-  void build(Index node, Index first, Index count) {
-    if (count < kParallelAbove) return build_sequential(node, first, count);
-    const Index half = split(node, first, count);
-    tbb::parallel_invoke([&] { build(node + 1, first, half); },
-                         [&] { build(node + 2 * half, first + half, count - half); });
+// Builds a pre-order layout top-down over order[first, first + count) with `splitter`
+// (Split split(range, node, is_patch, scratch) const, reordering the range): the left
+// subtree (2·left - 1 nodes) follows its parent, the right subtree follows it. Subtrees
+// of at least `parallel_from` primitives split their children in parallel (the ranges are
+// disjoint and each split depends only on its range, so the tree does not depend on
+// scheduling); smaller ones run with an explicit stack (deep trees stay off the call
+// stack).
+template <class Splitter>
+class LayoutBuilder {
+ public:
+  LayoutBuilder(const Splitter& splitter, std::vector<Index>& order, BvhLayout& layout,
+                Index parallel_from)
+      : m_splitter(splitter), m_order(order), m_layout(layout), m_parallel_from(parallel_from) {}
+
+  void build(Index node, Index first, Index count, bool is_patch = false) {
+    if (count < m_parallel_from) return build_sequential(node, first, count, is_patch);
+    const Split split = split_node(node, first, count, is_patch, m_scratch.local());
+    tbb::parallel_invoke(
+        [&] { build(node + 1, first, split.left, split.left_is_patch); },
+        [&] { build(node + 2 * split.left, first + split.left, count - split.left); });
   }
 
  private:
-  static constexpr Index kParallelAbove = 8192;
+  using Scratch = typename Splitter::Scratch;
 
-  // Pre-order numbering: the left subtree (2·half - 1 nodes) follows its parent, the right
-  // subtree follows it. Records the node; returns the left child's size (0 for a leaf).
-  Index split(Index node, Index first, Index count) {
+  // Records node's count and right child (or primitive); returns the split.
+  Split split_node(Index node, Index first, Index count, bool is_patch, Scratch& scratch) {
     m_layout.count[node] = count;
-    const auto begin = m_order.begin() + first;
     if (count == 1) {
-      m_layout.right[node] = *begin;
-      return 0;
+      m_layout.right[node] = m_order[first];
+      return {0};
     }
-    Eigen::Array3d low = m_centers[*begin].array(), high = low;
-    for (Index i = 1; i < count; ++i) {
-      low = low.min(m_centers[begin[i]].array());
-      high = high.max(m_centers[begin[i]].array());
-    }
-    int axis = 0;
-    (high - low).maxCoeff(&axis);
-    const Index half = count / 2;
-    std::nth_element(begin, begin + half, begin + count, [&](Index a, Index b) {
-      return m_centers[a][axis] < m_centers[b][axis] ||
-             (m_centers[a][axis] == m_centers[b][axis] && a < b);
-    });
-    m_layout.right[node] = node + 2 * half;
-    return half;
+    const std::span<Index> range(m_order.data() + first, static_cast<std::size_t>(count));
+    const Split split = m_splitter.split(range, node, is_patch, scratch);
+    m_layout.right[node] = node + 2 * split.left;
+    return split;
   }
 
-  void build_sequential(Index node, Index first, Index count) {
+  void build_sequential(Index node, Index first, Index count, bool is_patch) {
     struct Task {
       Index node, first, count;
+      bool is_patch;
     };
-    std::vector<Task> stack{{node, first, count}};
+    Scratch& scratch = m_scratch.local();
+    std::vector<Task> stack{{node, first, count, is_patch}};
     while (!stack.empty()) {
       const Task task = stack.back();
       stack.pop_back();
-      const Index half = split(task.node, task.first, task.count);
+      const Split split = split_node(task.node, task.first, task.count, task.is_patch, scratch);
       if (task.count == 1) continue;
-      stack.push_back({task.node + 2 * half, task.first + half, task.count - half});
-      stack.push_back({task.node + 1, task.first, half});
+      const Index left = split.left;
+      stack.push_back({task.node + 2 * left, task.first + left, task.count - left, false});
+      stack.push_back({task.node + 1, task.first, left, split.left_is_patch});
     }
   }
 
-  std::span<const Vec3> m_centers;
+  const Splitter& m_splitter;
   std::vector<Index>& m_order;
   BvhLayout& m_layout;
+  const Index m_parallel_from;
+  tbb::enumerable_thread_specific<Scratch> m_scratch;
 };
 
-}  // namespace
-
-BvhLayout build_median_split_layout(std::span<const Vec3> centers) {
+// The layout of n primitives (0..n-1, in that order at the root) by `splitter`.
+template <class Splitter>
+BvhLayout build_layout(Index n, const Splitter& splitter, Index parallel_from) {
   BvhLayout layout;
-  const Index n = static_cast<Index>(centers.size());
   if (n == 0) return layout;
   layout.right.assign(static_cast<std::size_t>(2 * n - 1), -1);
   layout.count.assign(static_cast<std::size_t>(2 * n - 1), 0);
   std::vector<Index> order(static_cast<std::size_t>(n));
   std::iota(order.begin(), order.end(), 0);
-  MedianSplitBuilder(centers, order, layout).build(0, 0, n);
+  LayoutBuilder<Splitter>(splitter, order, layout, parallel_from).build(0, 0, n);
   return layout;
 }
 
-}  // namespace tailor
+// Halves a range at the median of its centres along their widest axis.
+struct MedianSplitter {
+  struct Scratch {};
 
-namespace tailor {
+  std::span<const Vec3> centers;
+
+  Split split(std::span<Index> range, Index /*node*/, bool /*is_patch*/, Scratch&) const {
+    Eigen::Array3d low = centers[range[0]].array(), high = low;
+    for (Index p : range) {
+      low = low.min(centers[p].array());
+      high = high.max(centers[p].array());
+    }
+    int axis = 0;
+    (high - low).maxCoeff(&axis);
+    const Index half = static_cast<Index>(range.size()) / 2;
+    std::nth_element(range.begin(), range.begin() + half, range.end(), [&](Index a, Index b) {
+      return centers[a][axis] < centers[b][axis] || (centers[a][axis] == centers[b][axis] && a < b);
+    });
+    return {half};
+  }
+};
+
+}  // namespace
+
+BvhLayout build_median_split_layout(std::span<const Vec3> centers) {
+  return build_layout(static_cast<Index>(centers.size()), MedianSplitter{centers}, 8192);
+}
+
 namespace {
 
 // Edge-adjacency of a face subset (faces sharing an edge), in CSR form over local ids.
@@ -132,11 +160,7 @@ class SurfaceSplitter {
   SurfaceSplitter(const FaceGraph& graph, std::span<const Vec3> centers)
       : m_graph(graph), m_centers(centers), m_state(centers.size(), -1) {}
 
-  /// How a split divided its range.
-  struct Split {
-    Index left;          ///< the first `left` faces of the range form the left child
-    bool left_is_patch;  ///< ...in breadth-first order of their patch from the first
-  };
+  using Scratch = SplitScratch;
 
   // Reorders `range` into its two children. `task` is unique among all splits (the node
   // id). `is_patch`: the range is one patch listed in breadth-first order from its first
@@ -245,81 +269,13 @@ class SurfaceSplitter {
   mutable std::vector<Index> m_state;
 };
 
-// Builds the subtree of `node` over order[first, first + count): large subtrees split
-// their two children in parallel, small ones run sequentially with an explicit stack
-// (deep trees stay off the call stack).
-class SurfaceLayoutBuilder {
- public:
-  SurfaceLayoutBuilder(const SurfaceSplitter& splitter, std::vector<Index>& order,
-                       BvhLayout& layout)
-      : m_splitter(splitter), m_order(order), m_layout(layout) {}
-
-  void build(Index node, Index first, Index count, bool is_patch = false) {
-    if (count < kParallelBelow) return build_sequential(node, first, count, is_patch);
-    const SurfaceSplitter::Split split =
-        split_node(node, first, count, is_patch, m_scratch.local());
-    const Index left = split.left;
-    tbb::parallel_invoke([&] { build(node + 1, first, left, split.left_is_patch); },
-                         [&] { build(node + 2 * left, first + left, count - left); });
-  }
-
- private:
-  static constexpr Index kParallelBelow = 2048;
-
-  // Records node's count and right child (or primitive); returns the split.
-  SurfaceSplitter::Split split_node(Index node, Index first, Index count, bool is_patch,
-                                    SplitScratch& scratch) {
-    m_layout.count[node] = count;
-    if (count == 1) {
-      m_layout.right[node] = m_order[first];
-      return {0, false};
-    }
-    const std::span<Index> range(m_order.data() + first, static_cast<std::size_t>(count));
-    const SurfaceSplitter::Split split = m_splitter.split(range, node, is_patch, scratch);
-    m_layout.right[node] = node + 2 * split.left;
-    return split;
-  }
-
-  void build_sequential(Index node, Index first, Index count, bool is_patch) {
-    struct Task {
-      Index node, first, count;
-      bool is_patch;
-    };
-    SplitScratch& scratch = m_scratch.local();
-    std::vector<Task> stack{{node, first, count, is_patch}};
-    while (!stack.empty()) {
-      const Task task = stack.back();
-      stack.pop_back();
-      const SurfaceSplitter::Split split =
-          split_node(task.node, task.first, task.count, task.is_patch, scratch);
-      if (task.count == 1) continue;
-      const Index left = split.left;
-      stack.push_back({task.node + 2 * left, task.first + left, task.count - left, false});
-      stack.push_back({task.node + 1, task.first, left, split.left_is_patch});
-    }
-  }
-
-  const SurfaceSplitter& m_splitter;
-  std::vector<Index>& m_order;
-  BvhLayout& m_layout;
-  tbb::enumerable_thread_specific<SplitScratch> m_scratch;
-};
-
 }  // namespace
 
 BvhLayout build_surface_layout(const TriangleMesh& mesh, std::span<const Index> faces,
                                std::span<const Vec3> centers) {
-  BvhLayout layout;
-  const Index n = static_cast<Index>(faces.size());
-  if (n == 0) return layout;
-  layout.right.assign(static_cast<std::size_t>(2 * n - 1), -1);
-  layout.count.assign(static_cast<std::size_t>(2 * n - 1), 0);
-  std::vector<Index> order(static_cast<std::size_t>(n));
-  std::iota(order.begin(), order.end(), 0);
+  if (faces.empty()) return {};
   const FaceGraph graph(mesh, faces);
-  const SurfaceSplitter splitter(graph, centers);
-  SurfaceLayoutBuilder(splitter, order, layout).build(0, 0, n);
-  return layout;
+  return build_layout(static_cast<Index>(faces.size()), SurfaceSplitter(graph, centers), 2048);
 }
 
 }  // namespace tailor
