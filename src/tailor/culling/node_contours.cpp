@@ -52,20 +52,11 @@ struct ContourBuilder {
         right = build(bvh.right(node), right_valid);
       }
       valid = left_valid && right_valid;
-      boundary.reserve(left.size() + right.size());
-      // Merge; an edge on both sides is interior now, and must be traversed in opposite
-      // directions by its two faces (consistent orientation).
-      std::size_t i = 0, j = 0;
-      while (i < left.size() || j < right.size()) {
-        if (j == right.size() || (i < left.size() && left[i].edge < right[j].edge)) {
-          boundary.push_back(left[i++]);
-        } else if (i == left.size() || right[j].edge < left[i].edge) {
-          boundary.push_back(right[j++]);
-        } else {
-          if (left[i].from != right[j].to) valid = false;
-          ++i, ++j;
-        }
-      }
+      boundary = std::move(left);
+      const auto middle = static_cast<std::ptrdiff_t>(boundary.size());
+      boundary.insert(boundary.end(), right.begin(), right.end());
+      std::inplace_merge(boundary.begin(), boundary.begin() + middle, boundary.end(), by_edge);
+      if (!drop_interior(boundary)) valid = false;
     }
     // Only nodes with a mask are ever tested (leaves never: a triangle cannot touch
     // itself).
@@ -73,10 +64,29 @@ struct ContourBuilder {
     return boundary;
   }
 
+  static bool by_edge(const HalfEdge& a, const HalfEdge& b) { return a.edge < b.edge; }
+
+  // Removes both half-edges of every edge listed twice in `sorted` (by edge): the edge is
+  // interior. False when two such half-edges run the same way (the faces are not
+  // consistently oriented).
+  static bool drop_interior(std::vector<HalfEdge>& sorted) {
+    bool consistent = true;
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < sorted.size(); ++i) {
+      if (i + 1 < sorted.size() && sorted[i + 1].edge == sorted[i].edge) {
+        if (sorted[i].from != sorted[i + 1].to) consistent = false;
+        ++i;  // interior: both copies go
+      } else {
+        sorted[kept++] = sorted[i];
+      }
+    }
+    sorted.resize(kept);
+    return consistent;
+  }
+
   // The boundary of a node of fewer than kGroupFaces faces (a group or a node inside one:
   // none below it keeps a mask) straight from its faces' half-edges, without a vector per
-  // node: an edge listed twice is interior, and its two faces must traverse it in
-  // opposite directions.
+  // node.
   std::vector<HalfEdge> group_boundary(Index node, bool& valid) const {
     std::vector<HalfEdge> half_edges;
     half_edges.reserve(3 * static_cast<std::size_t>(bvh.size(node)));
@@ -89,18 +99,8 @@ struct ContourBuilder {
         half_edges.push_back({edges[i], mesh.faces()(f, i), mesh.faces()(f, (i + 1) % 3)});
       }
     }
-    std::sort(half_edges.begin(), half_edges.end(),
-              [](const HalfEdge& a, const HalfEdge& b) { return a.edge < b.edge; });
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < half_edges.size(); ++i) {
-      if (i + 1 < half_edges.size() && half_edges[i + 1].edge == half_edges[i].edge) {
-        if (half_edges[i].from != half_edges[i + 1].to) valid = false;
-        ++i;  // interior: both copies go
-      } else {
-        half_edges[kept++] = half_edges[i];
-      }
-    }
-    half_edges.resize(kept);
+    std::sort(half_edges.begin(), half_edges.end(), by_edge);
+    if (!drop_interior(half_edges)) valid = false;
     return half_edges;
   }
 
