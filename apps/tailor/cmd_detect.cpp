@@ -48,7 +48,8 @@ void print_stats(const DetectionStats& s) {
       "away {} / undetermined {}\n",
       s.radial_pairs_culled, s.clusters_classified, s.clusters_certified, s.radial_positive,
       s.radial_negative, s.radial_undetermined);
-  fmt::print("triangles  : {} CTPs separated by a triangle's plane\n", s.triangle_pairs_separated);
+  fmt::print("triangles  : {} CTPs separated by a triangle's plane, {} kept apart by a direction\n",
+             s.triangle_pairs_separated, s.triangle_pairs_apart);
   fmt::print("isolated   : {} VF, {} EE pairs\n", s.isolated_vf_pairs, s.isolated_ee_pairs);
   fmt::print("low level  :        {:>10} {:>10}\n", "VF", "EE");
   fmt::print("  generated         {:>10} {:>10}\n", s.vf_generated, s.ee_generated);

@@ -22,7 +22,7 @@ using tailor::testing::sanitized;
 // without it the cone theorem does not hold).
 std::vector<DetectionConfig> all_stage_combinations() {
   std::vector<DetectionConfig> configs;
-  for (int bits = 0; bits < 128; ++bits) {
+  for (int bits = 0; bits < 256; ++bits) {
     DetectionConfig config = DetectionConfig::preset("basic");
     config.normal_cones = bits & 1;
     config.contour_test = true;
@@ -32,6 +32,7 @@ std::vector<DetectionConfig> all_stage_combinations() {
     config.coplanarity_filter = bits & 16;
     config.projection_filter = bits & 32;
     config.triangle_filter = bits & 64;
+    config.direction_filter = bits & 128;
     configs.push_back(config);
   }
   return configs;
@@ -45,6 +46,7 @@ std::string describe(const DetectionConfig& c) {
          " filter=" + std::to_string(c.coplanarity_filter) +
          " projection=" + std::to_string(c.projection_filter) +
          " triangle_filter=" + std::to_string(c.triangle_filter) +
+         " direction_filter=" + std::to_string(c.direction_filter) +
          " threads=" + std::to_string(c.threads);
 }
 

@@ -9,6 +9,7 @@
 #include "tailor/bvh/step_boxes.hpp"
 #include "tailor/candidates/batch_pair_filters.hpp"
 
+#include "tailor/candidates/step_separating_direction.hpp"
 #include "tailor/candidates/triangle_plane_sides.hpp"
 
 namespace tailor {
@@ -368,6 +369,7 @@ class Stages {
 
 LowLevelCounts& LowLevelCounts::operator+=(const LowLevelCounts& other) {
   triangle_pairs_separated += other.triangle_pairs_separated;
+  triangle_pairs_apart += other.triangle_pairs_apart;
   vf_generated += other.vf_generated;
   ee_generated += other.ee_generated;
   vf_after_boxes += other.vf_after_boxes;
@@ -421,15 +423,21 @@ void PrimitivePairGenerator::add_triangle_pairs(std::span<const TrianglePair> ct
       if (options.triangle_filter) {
         triangle_pair_sides(m_mesh->faces(), x0, x1, chunk, std::span(sides.data(), count));
       }
-      // The CTPs the filter kept, listed without a branch per CTP (about two in three
-      // are separated, in no predictable order), then expanded.
+      if (options.direction_filter) {
+        mark_pairs_apart(m_mesh->faces(), x0, x1, chunk, std::span(sides.data(), count));
+      }
+      // The CTPs the filters kept, listed without a branch per CTP (about three in four
+      // are dropped, in no predictable order), then expanded.
       std::array<std::uint8_t, kChunk> kept;
-      std::size_t num_kept = 0;
+      std::size_t num_kept = 0, num_apart = 0;
       for (std::size_t i = 0; i < count; ++i) {
         kept[num_kept] = static_cast<std::uint8_t>(i);
         num_kept += !sides[i].separated();
+        num_apart += sides[i].apart;
       }
-      local.counts.triangle_pairs_separated += static_cast<std::int64_t>(count - num_kept);
+      local.counts.triangle_pairs_separated +=
+          static_cast<std::int64_t>(count - num_kept - num_apart);
+      local.counts.triangle_pairs_apart += static_cast<std::int64_t>(num_apart);
       for (std::size_t k = 0; k < num_kept; ++k) {
         const std::size_t i = kept[k];
         stages.expand(chunk[i].first, chunk[i].second, sides[i], local);

@@ -21,6 +21,8 @@ namespace tailor {
 struct LowLevelOptions {
   bool triangle_filter =
       true;  ///< drop CTPs (and pairs) by their planes (triangle_plane_sides.hpp)
+  bool direction_filter =
+      true;  ///< drop CTPs a fixed direction keeps apart (step_separating_direction.hpp)
   bool feature_assignment = true;  ///< test each feature pair from one triangle pair only
   bool primitive_boxes = true;  ///< drop pairs kept apart by their boxes at both ends of the step
   bool coplanarity_filter = true;  ///< drop pairs that can never become coplanar
@@ -32,6 +34,7 @@ struct LowLevelOptions {
 /// VF and EE pair counts after each low-level stage.
 struct LowLevelCounts {
   std::int64_t triangle_pairs_separated = 0;  ///< CTPs the triangle filter dropped whole
+  std::int64_t triangle_pairs_apart = 0;      ///< CTPs the separating-direction filter dropped
   ///@{
   /// Pairs the feature assignment owed to the candidate triangle pairs (and the isolated set).
   std::int64_t vf_generated = 0, ee_generated = 0;

@@ -60,6 +60,9 @@ struct TrianglePairSides {
   std::uint8_t above = 0;
   /// Corners certainly strictly below the other face's plane.
   std::uint8_t below = 0;
+  /// 1 when a fixed direction keeps the two faces apart over the whole step
+  /// (step_separating_direction.hpp): no feature pair of theirs can touch.
+  std::uint8_t apart = 0;
 
   /// Bit of corner k of the second face against the first face's plane.
   static constexpr int second_corner(int k) { return k; }
@@ -68,7 +71,9 @@ struct TrianglePairSides {
 
   /// Whether all three corners of one face are on one side of the other's plane: no
   /// feature pair of the two faces can touch.
-  bool separated() const {
+  bool separated() const { return apart != 0 || separated_by_plane(); }
+  /// Whether all three corners of one face are on one side of the other's plane.
+  bool separated_by_plane() const {
     return (above & 7u) == 7u || (below & 7u) == 7u || (above >> 3) == 7u || (below >> 3) == 7u;
   }
   /// Whether the corner of `bit` never meets the other face's plane.

@@ -55,6 +55,9 @@ inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
   SWITCH(triangle_filter, true, "triangle-filter", work_only,                                     \
          "triangle filter: drop candidate triangle pairs (and their vertex-face and edge-edge "  \
          "pairs) that a moving triangle plane separates (candidates/triangle_plane_sides.hpp)")   \
+  SWITCH(direction_filter, true, "direction-filter", work_only,                                   \
+         "separating-direction filter: drop candidate triangle pairs that one fixed direction "   \
+         "keeps apart at both ends of the step (candidates/step_separating_direction.hpp)")       \
   SWITCH(feature_assignment, true, "assignment", work_only,                                       \
          "feature assignment: each vertex and edge tested through one representative triangle "   \
          "(Curtis et al. 2008)")                                                                  \

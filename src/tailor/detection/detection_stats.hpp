@@ -41,6 +41,8 @@ namespace tailor {
   COUNT(candidate_triangle_pairs, "traversal", "candidate triangle pairs (CTPs) emitted")        \
   COUNT(triangle_pairs_separated, "low level",                                                    \
         "CTPs the triangle filter dropped whole (one face on one side of the other's plane)")     \
+  COUNT(triangle_pairs_apart, "low level",                                                        \
+        "CTPs the separating-direction filter dropped (kept apart along one fixed direction)")    \
   COUNT(isolated_vf_pairs, "isolated set", "vertex-face pairs of the isolated set")              \
   COUNT(isolated_ee_pairs, "isolated set", "edge-edge pairs of the isolated set")                \
   COUNT(vf_generated, "low level", "vertex-face pairs generated from the CTPs + isolated set")   \

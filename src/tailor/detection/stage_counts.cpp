@@ -26,6 +26,7 @@ void record_counts(DetectionStats& stats, const IsolatedSet& isolated) {
 
 void record_counts(DetectionStats& stats, const LowLevelCounts& counts) {
   stats.triangle_pairs_separated = counts.triangle_pairs_separated;
+  stats.triangle_pairs_apart = counts.triangle_pairs_apart;
   stats.vf_generated = counts.vf_generated;
   stats.ee_generated = counts.ee_generated;
   stats.vf_after_boxes = counts.vf_after_boxes;

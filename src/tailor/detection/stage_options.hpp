@@ -17,6 +17,7 @@ inline TraversalOptions traversal_options(const DetectionConfig& config) {
 inline LowLevelOptions low_level_options(const DetectionConfig& config) {
   LowLevelOptions options;
   options.triangle_filter = config.triangle_filter;
+  options.direction_filter = config.direction_filter;
   options.feature_assignment = config.feature_assignment;
   options.primitive_boxes = config.primitive_boxes;
   options.coplanarity_filter = config.coplanarity_filter;
