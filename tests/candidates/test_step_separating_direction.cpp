@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
 
 #include "support/sanitized.hpp"
@@ -144,6 +145,33 @@ TEST(StepSeparatingDirection, OnlyPairsNotYetSeparatedAreTested) {
   EXPECT_GT(tested_apart, 0);
   std::vector<TrianglePairSides> wrong_size(3);
   EXPECT_THROW(mark_pairs_apart(t.faces, t.x0, t.x1, t.pairs, wrong_size), std::invalid_argument);
+}
+
+// A NaN or an infinity anywhere in a pair that is otherwise apart: never certified.
+TEST(StepSeparatingDirection, NonFiniteCornersAreNeverApart) {
+  TrianglePairs t = make_pairs(1, 5);
+  t.x0.setZero();
+  t.x0.topRows(3) << 0, 0, 0, 1, 0, 0, 0, 1, 0;     // A in z = 0
+  t.x0.bottomRows(3) << 0, 0, 1, 1, 0, 1, 0, 1, 1;  // B a unit above it, crossed edges apart
+  t.x0(4, 0) = 0.5;
+  t.x1 = t.x0;
+  std::vector<TrianglePairSides> sides(1);
+  mark_pairs_apart(t.faces, t.x0, t.x1, t.pairs, sides);
+  ASSERT_EQ(sides[0].apart, 1);
+  for (const double bad :
+       {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    for (Positions* x : {&t.x0, &t.x1}) {
+      for (Index v = 0; v < 6; ++v) {
+        for (int k = 0; k < 3; ++k) {
+          const double kept = (*x)(v, k);
+          (*x)(v, k) = bad;
+          mark_pairs_apart(t.faces, t.x0, t.x1, t.pairs, sides);
+          EXPECT_EQ(sides[0].apart, 0) << bad << " at vertex " << v << ", coordinate " << k;
+          (*x)(v, k) = kept;
+        }
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -15,11 +15,11 @@
 /// triangles can collide. Any direction will do, so d is whatever the arithmetic gives: it
 /// need not be exact, only the comparisons must be.
 ///
-/// Directions tried: the nine cross products of an edge of A with an edge of B at t = 1, then
-/// at t = 0 for the vectors of pairs not all apart yet (the axes of the static
-/// separating-axis test of two triangles beyond their normals, which the plane filter has
-/// tried already as moving planes). On cloth-ball's step they drop 357,824 of the 705,033
-/// CTPs the planes keep; the crosses at t = 1 alone drop 296,875.
+/// Directions tried: the nine cross products of an edge of A with an edge of B at t = 1 (the
+/// axes of the static separating-axis test of two triangles beyond their normals, which the
+/// plane filter has tried already as moving planes). On cloth-ball's step they drop 296,875
+/// of the 705,033 CTPs the planes keep, on the pleated 100K 525,857 of 1,453,111; the same
+/// crosses at t = 0 would add 61 K and 2 K for as much time as they save.
 ///
 /// Certified comparisons. Each projection p = fl(d·x) of an input corner x (three products,
 /// two sums, in any order, with or without fused multiply-adds) is within
@@ -27,8 +27,8 @@
 /// positions; the second term covers underflow), below E = 2^-50·|d|₁·M + 2^-1000 even after
 /// the roundings of |d|₁·M itself. A pair is apart along d when the computed gap
 /// fl(min_B - max_A) exceeds 4E at both ends (the true gap is then above 4E/(1 + u) - 2E > 0);
-/// a lane whose |d|₁·M exceeds 2^900 (no product can overflow below that) or holds a NaN is
-/// never certified, since every comparison with a NaN is false.
+/// a lane whose |d|₁·M exceeds 2^900 (no product can overflow below that) or whose corners
+/// hold an infinity or a NaN (then M is one) is never certified.
 
 #include <span>
 
