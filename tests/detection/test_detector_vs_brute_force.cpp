@@ -22,7 +22,7 @@ using tailor::testing::sanitized;
 // without it the cone theorem does not hold).
 std::vector<DetectionConfig> all_stage_combinations() {
   std::vector<DetectionConfig> configs;
-  for (int bits = 0; bits < 256; ++bits) {
+  for (int bits = 0; bits < 512; ++bits) {
     DetectionConfig config = DetectionConfig::preset("basic");
     config.normal_cones = bits & 1;
     config.contour_test = true;
@@ -33,6 +33,7 @@ std::vector<DetectionConfig> all_stage_combinations() {
     config.projection_filter = bits & 32;
     config.triangle_filter = bits & 64;
     config.direction_filter = bits & 128;
+    config.diagonal_bounds = bits & 256;
     configs.push_back(config);
   }
   return configs;
@@ -47,6 +48,7 @@ std::string describe(const DetectionConfig& c) {
          " projection=" + std::to_string(c.projection_filter) +
          " triangle_filter=" + std::to_string(c.triangle_filter) +
          " direction_filter=" + std::to_string(c.direction_filter) +
+         " diagonal_bounds=" + std::to_string(c.diagonal_bounds) +
          " threads=" + std::to_string(c.threads);
 }
 

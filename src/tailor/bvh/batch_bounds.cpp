@@ -1,28 +1,11 @@
 #include "tailor/bvh/batch_bounds.hpp"
 
 #include <cstring>
-#include <limits>
 
 #include "tailor/bvh/lane_vectors.hpp"
 
 namespace tailor {
 namespace {
-
-constexpr double kFloatMax = std::numeric_limits<float>::max();
-
-// Per lane, a float <= x (float_at_most, float_box.hpp) clamped to the float range, without
-// branches: x - |x|·2^-23 - 2^-149 is below x by more than half a float ulp, so rounding it
-// to the nearest float cannot land above x.
-template <int W>
-[[gnu::always_inline]] inline typename lanes::FloatVectors<W>::Lanes float_below(
-    typename lanes::Vectors<W>::Lanes x) {
-  using Lanes = typename lanes::Vectors<W>::Lanes;
-  const Lanes top = Lanes{} + kFloatMax;
-  Lanes nudged = x - lanes::abs(x) * 0x1p-23 - 0x1p-149;
-  nudged = top < nudged ? top : nudged;
-  nudged = nudged < -top ? -top : nudged;
-  return __builtin_convertvector(nudged, typename lanes::FloatVectors<W>::Lanes);
-}
 
 // The bounds of lanes i to i + W of the corners `first_corner` to first_corner + 2 (one
 // frame).
@@ -38,7 +21,7 @@ template <int W>
       lo = x < lo ? x : lo;
       hi = hi < x ? x : hi;
     }
-    const auto below = float_below<W>(lo), above = -float_below<W>(-hi);
+    const auto below = lanes::float_below<W>(lo), above = -lanes::float_below<W>(-hi);
     std::memcpy(&out.low[k][i], &below, sizeof below);
     std::memcpy(&out.high[k][i], &above, sizeof above);
   }

@@ -54,6 +54,20 @@ template <class Lanes>
   using Integer = std::remove_cvref_t<decltype(Bits{}[0])>;
   return (Lanes)((Bits)v & std::numeric_limits<Integer>::max());
 }
+/// Per lane, a float <= x (float_at_most, float_box.hpp) clamped to the float range, without
+/// branches: x - |x|·2^-23 - 2^-149 is below x by more than half a float ulp, so rounding it
+/// to the nearest float cannot land above x.
+template <int W>
+[[gnu::always_inline]] inline typename FloatVectors<W>::Lanes float_below(
+    typename Vectors<W>::Lanes x) {
+  using Lanes = typename Vectors<W>::Lanes;
+  const Lanes top = Lanes{} + double{std::numeric_limits<float>::max()};
+  Lanes nudged = x - abs(x) * 0x1p-23 - 0x1p-149;
+  nudged = top < nudged ? top : nudged;
+  nudged = nudged < -top ? -top : nudged;
+  return __builtin_convertvector(nudged, typename FloatVectors<W>::Lanes);
+}
+
 /// Whether this processor runs the AVX2 kernels (checked once).
 inline bool has_avx2() {
   static const bool avx2 = __builtin_cpu_supports("avx2");

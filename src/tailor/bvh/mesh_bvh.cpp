@@ -8,6 +8,7 @@
 
 #include "tailor/bvh/batch_bounds.hpp"
 #include "tailor/bvh/batch_gather.hpp"
+#include "tailor/bvh/diagonal_bounds.hpp"
 #include "tailor/bvh/group_boxes.hpp"
 
 namespace tailor {
@@ -50,12 +51,14 @@ void MeshBvh::build_nodes(const TriangleMesh& mesh, const Positions& x_build,
   }
   const BvhLayout layout = build_surface_layout(mesh, faces, centers);
   const Index n = layout.num_nodes();
-  m_nodes.resize(static_cast<std::size_t>(n));
-  for (Index node = 0; node < n; ++node) {
-    m_nodes[node].count = layout.count[node];
-    m_nodes[node].right_or_face =
-        layout.is_leaf(node) ? faces[layout.right[node]] : layout.right[node];
-  }
+  m_nodes.resize(static_cast<std::size_t>(n));  // unwritten: each record is built here
+  tbb::parallel_for(tbb::blocked_range<Index>(0, n, 4096), [&](const auto& range) {
+    for (Index node = range.begin(); node < range.end(); ++node) {
+      Node* record = ::new (static_cast<void*>(&m_nodes[node])) Node;
+      record->count = layout.count[node];
+      record->right_or_face = layout.is_leaf(node) ? faces[layout.right[node]] : layout.right[node];
+    }
+  });
 }
 
 MeshBvh::Roles MeshBvh::mark_roles() {
@@ -150,14 +153,16 @@ void MeshBvh::index_tasks(const Roles& roles) {
   }
 }
 
-void MeshBvh::refit(const Positions& x0, const Positions& x1, bool with_directions) {
-  refit_parts(x0, x1, {true, with_directions});
+void MeshBvh::refit(const Positions& x0, const Positions& x1, bool with_directions,
+                    bool with_diagonals) {
+  refit_parts(x0, x1, {true, with_diagonals, with_directions});
   m_boxes_current = true;
+  m_diagonals_current = with_diagonals;
 }
 
 void MeshBvh::refit_directions(const Positions& x0, const Positions& x1) {
-  refit_parts(x0, x1, {false, true});
-  m_boxes_current = false;
+  refit_parts(x0, x1, {false, false, true});
+  m_boxes_current = m_diagonals_current = false;
 }
 
 void MeshBvh::refit_parts(const Positions& x0, const Positions& x1, RefitParts parts) {
@@ -226,14 +231,16 @@ void MeshBvh::refit_groups(Index first, Index end, Index faces, const Positions&
                batch);
   // Leaf boxes: per frame, coordinate and lane, the three corners' extremes, rounded
   // outward.
-  BatchBounds start, end_bounds;
+  BatchBounds start, end_bounds, diagonal_start, diagonal_end;
   if (parts.boxes) batch_bounds(batch, start, end_bounds);
+  if (parts.diagonals) diagonal_batch_bounds(batch, diagonal_start, diagonal_end);
   LaneMasks masks;
   if (parts.directions) lane_masks(batch, masks);
   // Each group's nodes are the id range [root, root + 2·count - 1) (pre-order): its leaves
   // in increasing id order are consecutive lanes of the batch.
   static_assert(offsetof(Node, right_or_face) == sizeof(FloatBox) && offsetof(Node, end) == 32 &&
-                    sizeof(Node) == 64,
+                    offsetof(Node, diagonal_start) == 64 && offsetof(Node, diagonal_end) == 96 &&
+                    sizeof(Node) == 128,
                 "write_group_boxes() writes 32 bytes from each box");
   int lane = 0;
   for (Index g = first; g < end; ++g) {
@@ -245,12 +252,18 @@ void MeshBvh::refit_groups(Index first, Index end, Index faces, const Positions&
       write_group_boxes(end_bounds, lane, group.leaf_bits, count, &m_nodes[group.root].end,
                         sizeof(Node));
     }
+    if (parts.diagonals) {
+      write_group_boxes(diagonal_start, lane, group.leaf_bits, count,
+                        &m_nodes[group.root].diagonal_start, sizeof(Node));
+      write_group_boxes(diagonal_end, lane, group.leaf_bits, count,
+                        &m_nodes[group.root].diagonal_end, sizeof(Node));
+    }
     if (parts.directions) m_masks[group.mask_slot] = and_of_masks(masks, lane, lane + count);
     lane += count;
   }
 }
 
-void MeshBvh::join_children(Index node) {
+void MeshBvh::join_children(Index node, bool diagonals) {
   // Component by component: a child that is a merge node was just written a float at a
   // time, and a wider load of it would wait for those stores (a failed store-to-load
   // forward).
@@ -265,10 +278,13 @@ void MeshBvh::join_children(Index node) {
   };
   join(record.start, left.start, right.start);
   join(record.end, left.end, right.end);
+  if (!diagonals) return;
+  join(record.diagonal_start, left.diagonal_start, right.diagonal_start);
+  join(record.diagonal_end, left.diagonal_end, right.diagonal_end);
 }
 
 void MeshBvh::merge(const Merge& merge, RefitParts parts) {
-  if (parts.boxes) join_children(merge.node);
+  if (parts.boxes) join_children(merge.node, parts.diagonals);
   if (parts.directions) {
     m_masks[merge.slot] = m_masks[merge.left_slot] & m_masks[merge.right_slot];
   }

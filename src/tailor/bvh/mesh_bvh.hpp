@@ -14,6 +14,7 @@
 #include "tailor/bvh/direction_mask.hpp"
 #include "tailor/bvh/float_box.hpp"
 #include "tailor/bvh/step_boxes.hpp"
+#include "tailor/bvh/unwritten_allocator.hpp"
 #include "tailor/mesh/triangle_mesh.hpp"
 
 namespace tailor {
@@ -21,12 +22,14 @@ namespace tailor {
 /// A BVH over a subset of the faces of a mesh (all of them by default), built once on
 /// one frame (build_surface_layout: nodes are connected patches where possible, so that
 /// normal bounds can certify them) and refitted every step with two boxes per node (of its
-/// faces at x0 and at x1: two nodes may meet only if may_meet_over_step(), step_boxes.hpp)
-/// and direction masks merged upward.
+/// faces at x0 and at x1: two nodes may meet only if may_meet_over_step(), step_boxes.hpp),
+/// two sets of bounds along diagonals (the same test along them, diagonal_bounds.hpp) and
+/// direction masks merged upward.
 ///
 /// Layout (BvhLayout): pre-order, the left child of inner node i is i + 1. Each node is
-/// one 64-byte record, a cache line (box at t = 0, right child or face, face count, box at
-/// t = 1), 128 bytes per face, plus the corners of each face in leaf order (12 bytes) so
+/// one 128-byte record, two cache lines (box at t = 0, right child or face, face count, box
+/// at t = 1; then the bounds along three diagonals at t = 0 and t = 1, diagonal_bounds.hpp),
+/// 256 bytes per face, plus the corners of each face in leaf order (12 bytes) so
 /// the refit reads them in sequence.
 ///
 /// Refit in two kinds of work. A *group* is a maximal subtree of fewer than kGroupFaces
@@ -47,9 +50,11 @@ class MeshBvh {
   /// Builds over `faces` (mesh face ids), or over every face when `faces` is empty.
   MeshBvh(const TriangleMesh& mesh, const Positions& x_build, std::vector<Index> faces = {});
 
-  /// Refits boxes (and direction masks when `with_directions`) to the step from `x0` to
-  /// `x1` in one bottom-up pass (parallel over disjoint subtrees).
-  void refit(const Positions& x0, const Positions& x1, bool with_directions);
+  /// Refits boxes (with the diagonal bounds when `with_diagonals`, and the direction masks
+  /// when `with_directions`) to the step from `x0` to `x1` in one bottom-up pass (parallel
+  /// over disjoint subtrees). Without the diagonal bounds, may_meet() tests the boxes alone.
+  void refit(const Positions& x0, const Positions& x1, bool with_directions,
+             bool with_diagonals = true);
   /// Refits the direction masks only (the same pass without the boxes' bounds and
   /// writes). The boxes keep the step of the last refit(): boxes_current() is false
   /// until the next one. For a step whose root its mask certifies, no box is needed.
@@ -75,12 +80,20 @@ class MeshBvh {
   const FloatBox& start_box(Index node) const { return m_nodes[node].start; }
   /// Box of a node's faces at the step's end, x1 (valid after refit).
   const FloatBox& end_box(Index node) const { return m_nodes[node].end; }
+  /// Bounds of a node's corners at x0 along the diagonals of diagonal_bounds.hpp: min[k] and
+  /// max[k] along d_k (valid after refit).
+  const FloatBox& diagonal_start_box(Index node) const { return m_nodes[node].diagonal_start; }
+  /// The same at x1.
+  const FloatBox& diagonal_end_box(Index node) const { return m_nodes[node].diagonal_end; }
   /// Whether faces of `node` and faces of `other`'s node `other_node` may meet during the
-  /// refitted step (may_meet_over_step() of their boxes).
+  /// refitted step: may_meet_over_step() of their boxes, then of their diagonal bounds
+  /// (diagonal_bounds.hpp) when both trees were refitted with them.
   bool may_meet(Index node, const MeshBvh& other, Index other_node) const {
     const Node& a = m_nodes[node];
     const Node& b = other.m_nodes[other_node];
-    return may_meet_over_step(a.start, a.end, b.start, b.end);
+    if (!may_meet_over_step(a.start, a.end, b.start, b.end)) return false;
+    if (!m_diagonals_current || !other.m_diagonals_current) return true;
+    return may_meet_over_step(a.diagonal_start, a.diagonal_end, b.diagonal_start, b.diagonal_end);
   }
   /// Directions within 90° of every normal below the node over the step (valid after a
   /// refit with directions); 0 for the nodes inside a group, which keep no mask.
@@ -130,12 +143,18 @@ class MeshBvh {
   // Aligned to its size, so that no record straddles two cache lines (malloc aligns large
   // arrays to 16 bytes only). Each box is followed by eight bytes that write_group_boxes()
   // may rewrite with their own value.
-  struct alignas(64) Node {
+  struct alignas(128) Node {
     FloatBox start;
     Index right_or_face = -1;
     Index count = 0;
     FloatBox end;
     std::uint64_t unused = 0;
+    // Bounds along the diagonals of diagonal_bounds.hpp (min[k], max[k] along d_k), in the
+    // record's second cache line, laid out as the boxes are for write_group_boxes().
+    FloatBox diagonal_start;
+    std::uint64_t unused_start = 0;
+    FloatBox diagonal_end;
+    std::uint64_t unused_end = 0;
   };
   struct Group {
     Index root, first_leaf;  // its leaves are first_leaf, first_leaf + 1, ... (leaf order)
@@ -157,7 +176,7 @@ class MeshBvh {
   Index group_faces(Index g) const;
   // What one refit pass computes.
   struct RefitParts {
-    bool boxes, directions;
+    bool boxes, diagonals, directions;
   };
   void refit_parts(const Positions& x0, const Positions& x1, RefitParts parts);
   // Refits groups [first, end), of `faces` faces in all (at most a batch), from one batch.
@@ -165,9 +184,11 @@ class MeshBvh {
                     RefitParts parts);
   void merge(const Merge& merge, RefitParts parts);
   // Sets an inner node's boxes to the unions of its children's.
-  void join_children(Index node);
+  void join_children(Index node, bool diagonals);
 
-  std::vector<Node> m_nodes;
+  // Built in place, in parallel (build_nodes()): 256 bytes per face, zeroed on one thread
+  // they cost cloth-ball's build about a fifth more.
+  std::vector<Node, UnwrittenAllocator<Node>> m_nodes;
   std::vector<std::uint64_t> m_mask_bits;  // bit `node`: the node keeps a mask
   std::vector<Index> m_masks_before_word;  // masks of the nodes below 64 · word
   std::vector<DirectionMask> m_masks;
@@ -177,6 +198,7 @@ class MeshBvh {
   std::vector<Task> m_tasks;                          // disjoint subtrees
   std::vector<Index> m_top_merges;  // positions in m_merges of those above the tasks, decreasing
   bool m_boxes_current = false;
+  bool m_diagonals_current = false;
 };
 
 }  // namespace tailor

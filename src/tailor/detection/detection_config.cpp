@@ -15,7 +15,7 @@ DetectionConfig DetectionConfig::preset(std::string_view name) {
   config.normal_cones = config.contour_test = config.adjacency_culling = false;
   config.feature_assignment = config.primitive_boxes = config.coplanarity_filter = false;
   config.projection_filter = config.radial_view = config.triangle_filter = false;
-  config.direction_filter = false;
+  config.direction_filter = config.diagonal_bounds = false;
   if (name == "basic") return config;
   config.feature_assignment = true;
   if (name == "curtis") return config;
@@ -28,6 +28,7 @@ DetectionConfig DetectionConfig::preset(std::string_view name) {
   config.projection_filter = true;
   config.triangle_filter = true;
   config.direction_filter = true;
+  config.diagonal_bounds = true;
   if (name == "paper") return config;
   throw InputError(
       fmt::format("unknown method '{}' (expected one of: basic, curtis, tang, paper)", name));

@@ -115,9 +115,9 @@ struct SelfCollisionDetector::Impl {
       stats.traversal_ms = milliseconds_since(stage);
       if (certified) return;
       stage = SteadyClock::now();
-      bvh.refit(x0, x1, false);  // the boxes (the masks are this step's)
+      bvh.refit(x0, x1, false, config.diagonal_bounds);  // the masks are this step's
     } else {
-      bvh.refit(x0, x1, config.normal_cones);
+      bvh.refit(x0, x1, config.normal_cones, config.diagonal_bounds);
     }
     stats.boxes_refitted = 1;
     stats.refit_ms += milliseconds_since(stage);

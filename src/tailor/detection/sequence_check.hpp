@@ -55,7 +55,7 @@ struct FrameCheck {
 
 /// One step k → k+1: its collisions and the static check of both frames.
 struct StepCheck {
-  Index step = -1;          ///< k, the position of the step's first frame
+  Index step = -1;  ///< k, the position of the step's first frame
   ///@{
   /// Frames k and k+1 (start repeats the previous step's end).
   FrameCheck start, end;
