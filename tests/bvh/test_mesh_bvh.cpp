@@ -184,11 +184,12 @@ mpq_class exact_diagonal(const Positions& x, Index v, int k) {
   const mpq_class px(x(v, 0)), py(x(v, 1)), pz(x(v, 2));
   if (k == 0) return px + py + pz;
   if (k == 1) return px + py - pz;
-  return px - py + pz;
+  if (k == 2) return px - py + pz;
+  return py + pz - px;
 }
 
-bool diagonals_hold(const FloatBox& box, const Positions& x, Index v) {
-  for (int k = 0; k < 3; ++k) {
+bool diagonals_hold(const DiagonalBox& box, const Positions& x, Index v) {
+  for (int k = 0; k < kDiagonals; ++k) {
     const mpq_class p = exact_diagonal(x, v, k);
     if (mpq_class(box.min[k]) > p || mpq_class(box.max[k]) < p) return false;
   }

@@ -12,17 +12,17 @@ namespace {
 // rounded outward to float.
 template <int W>
 [[gnu::always_inline]] inline void lane_bounds(const MovingTriangleBatch& batch, int i,
-                                               int first_corner, BatchBounds& out) {
+                                               int first_corner, DiagonalBatchBounds& out) {
   using Lanes = typename lanes::Vectors<W>::Lanes;
   const auto& c = batch.coordinate;
-  Lanes low[3], high[3];
+  Lanes low[kDiagonals], high[kDiagonals];
   for (int corner = first_corner; corner < first_corner + 3; ++corner) {
     const Lanes x = lanes::load<W>(c[3 * corner] + i);
     const Lanes y = lanes::load<W>(c[3 * corner + 1] + i);
     const Lanes z = lanes::load<W>(c[3 * corner + 2] + i);
     const Lanes margin = (lanes::abs(x) + lanes::abs(y) + lanes::abs(z)) * 0x1p-50;
-    const Lanes p[3] = {x + y + z, x + y - z, x - y + z};
-    for (int k = 0; k < 3; ++k) {
+    const Lanes p[kDiagonals] = {x + y + z, x + y - z, x - y + z, y + z - x};
+    for (int k = 0; k < kDiagonals; ++k) {
       const Lanes lo = p[k] - margin, hi = p[k] + margin;
       if (corner == first_corner) {
         low[k] = lo;
@@ -33,7 +33,7 @@ template <int W>
       }
     }
   }
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < kDiagonals; ++k) {
     const auto below = lanes::float_below<W>(low[k]), above = -lanes::float_below<W>(-high[k]);
     std::memcpy(&out.low[k][i], &below, sizeof below);
     std::memcpy(&out.high[k][i], &above, sizeof above);
@@ -41,26 +41,28 @@ template <int W>
 }
 
 template <int W>
-[[gnu::always_inline]] inline void bounds(const MovingTriangleBatch& batch, BatchBounds& start,
-                                          BatchBounds& end) {
+[[gnu::always_inline]] inline void bounds(const MovingTriangleBatch& batch,
+                                          DiagonalBatchBounds& start, DiagonalBatchBounds& end) {
   for (int i = 0; i < batch.padded_count(); i += W) {
     lane_bounds<W>(batch, i, 0, start);
     lane_bounds<W>(batch, i, 3, end);
   }
 }
 
-void bounds_sse2(const MovingTriangleBatch& batch, BatchBounds& start, BatchBounds& end) {
+void bounds_sse2(const MovingTriangleBatch& batch, DiagonalBatchBounds& start,
+                 DiagonalBatchBounds& end) {
   bounds<2>(batch, start, end);
 }
 
-[[gnu::target("avx2")]] void bounds_avx2(const MovingTriangleBatch& batch, BatchBounds& start,
-                                         BatchBounds& end) {
+[[gnu::target("avx2")]] void bounds_avx2(const MovingTriangleBatch& batch,
+                                         DiagonalBatchBounds& start, DiagonalBatchBounds& end) {
   bounds<4>(batch, start, end);
 }
 
 // Eight lanes at a time, the last four (a batch is padded to a multiple of four) as above.
 [[gnu::target("avx512f,avx512dq,avx2")]] void bounds_avx512(const MovingTriangleBatch& batch,
-                                                            BatchBounds& start, BatchBounds& end) {
+                                                            DiagonalBatchBounds& start,
+                                                            DiagonalBatchBounds& end) {
   int i = 0;
   for (; i + 8 <= batch.padded_count(); i += 8) {
     lane_bounds<8>(batch, i, 0, start);
@@ -74,7 +76,8 @@ void bounds_sse2(const MovingTriangleBatch& batch, BatchBounds& start, BatchBoun
 
 }  // namespace
 
-void diagonal_batch_bounds(const MovingTriangleBatch& batch, BatchBounds& start, BatchBounds& end) {
+void diagonal_batch_bounds(const MovingTriangleBatch& batch, DiagonalBatchBounds& start,
+                           DiagonalBatchBounds& end) {
   lanes::widest(bounds_avx512, bounds_avx2, bounds_sse2)(batch, start, end);
 }
 

@@ -44,9 +44,73 @@ FloatBox& box_at(FloatBox* first, std::size_t stride, int node) {
   }
 }
 
+DiagonalBox& diagonal_box_at(DiagonalBox* first, std::size_t stride, int node) {
+  return *reinterpret_cast<DiagonalBox*>(reinterpret_cast<char*>(first) +
+                                         stride * static_cast<std::size_t>(node));
+}
+
+static_assert(sizeof(DiagonalBox) == 8 * sizeof(float), "a diagonal box is eight floats");
+
+// One vector per diagonal box, (min 0-3, -max 0-3), as in one_vector_per_box().
+[[gnu::target("avx2")]] void diagonal_boxes_avx2(const DiagonalBatchBounds& bounds, int first_lane,
+                                                 std::uint32_t leaf_bits, int count,
+                                                 DiagonalBox* first, std::size_t stride) {
+  __m256 below[MovingTriangleBatch::kCapacity];
+  int depth = 0;
+  __m256 top = _mm256_setzero_ps();
+  const __m256 negate_max = _mm256_setr_ps(0.0f, 0.0f, 0.0f, 0.0f, -0.0f, -0.0f, -0.0f, -0.0f);
+  int lane = first_lane + count - 1;
+  for (int node = 2 * count - 2; node >= 0; --node) {
+    if ((leaf_bits >> node) & 1) {
+      if (node != 2 * count - 2) below[depth++] = top;
+      top = _mm256_setr_ps(bounds.low[0][lane], bounds.low[1][lane], bounds.low[2][lane],
+                           bounds.low[3][lane], -bounds.high[0][lane], -bounds.high[1][lane],
+                           -bounds.high[2][lane], -bounds.high[3][lane]);
+      --lane;
+    } else {
+      top = _mm256_min_ps(top, below[--depth]);
+    }
+    _mm256_storeu_ps(reinterpret_cast<float*>(&diagonal_box_at(first, stride, node)),
+                     _mm256_xor_ps(top, negate_max));
+  }
+}
+
 }  // namespace
 
 namespace detail {
+
+void write_group_diagonal_boxes_sse2(const DiagonalBatchBounds& bounds, int first_lane,
+                                     std::uint32_t leaf_bits, int count, DiagonalBox* first,
+                                     std::size_t stride) {
+  // Two vectors per box, (min 0-3) and (-max 0-3), as in write_group_boxes_sse2().
+  __m128 below_min[MovingTriangleBatch::kCapacity], below_max[MovingTriangleBatch::kCapacity];
+  int depth = 0;
+  __m128 low = _mm_setzero_ps(), negated_high = _mm_setzero_ps();
+  int lane = first_lane + count - 1;
+  for (int node = 2 * count - 2; node >= 0; --node) {
+    if ((leaf_bits >> node) & 1) {
+      if (node != 2 * count - 2) below_min[depth] = low, below_max[depth] = negated_high, ++depth;
+      low = _mm_setr_ps(bounds.low[0][lane], bounds.low[1][lane], bounds.low[2][lane],
+                        bounds.low[3][lane]);
+      negated_high = _mm_setr_ps(-bounds.high[0][lane], -bounds.high[1][lane],
+                                 -bounds.high[2][lane], -bounds.high[3][lane]);
+      --lane;
+    } else {
+      --depth;
+      low = _mm_min_ps(low, below_min[depth]);
+      negated_high = _mm_min_ps(negated_high, below_max[depth]);
+    }
+    auto* record = reinterpret_cast<float*>(&diagonal_box_at(first, stride, node));
+    _mm_storeu_ps(record, low);
+    _mm_storeu_ps(record + 4, _mm_xor_ps(negated_high, _mm_set1_ps(-0.0f)));
+  }
+}
+
+void write_group_diagonal_boxes_avx2(const DiagonalBatchBounds& bounds, int first_lane,
+                                     std::uint32_t leaf_bits, int count, DiagonalBox* first,
+                                     std::size_t stride) {
+  diagonal_boxes_avx2(bounds, first_lane, leaf_bits, count, first, stride);
+}
 
 void write_group_boxes_sse2(const BatchBounds& bounds, int first_lane, std::uint32_t leaf_bits,
                             int count, FloatBox* first, std::size_t stride) {
@@ -88,6 +152,13 @@ void write_group_boxes_avx2(const BatchBounds& bounds, int first_lane, std::uint
 void write_group_boxes(const BatchBounds& bounds, int first_lane, std::uint32_t leaf_bits,
                        int count, FloatBox* first, std::size_t stride) {
   lanes::widest(detail::write_group_boxes_avx2, detail::write_group_boxes_sse2)(
+      bounds, first_lane, leaf_bits, count, first, stride);
+}
+
+void write_group_diagonal_boxes(const DiagonalBatchBounds& bounds, int first_lane,
+                                std::uint32_t leaf_bits, int count, DiagonalBox* first,
+                                std::size_t stride) {
+  lanes::widest(detail::write_group_diagonal_boxes_avx2, detail::write_group_diagonal_boxes_sse2)(
       bounds, first_lane, leaf_bits, count, first, stride);
 }
 

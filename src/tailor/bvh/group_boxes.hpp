@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "tailor/bvh/batch_bounds.hpp"
+#include "tailor/bvh/diagonal_bounds.hpp"
 #include "tailor/bvh/float_box.hpp"
 
 namespace tailor {
@@ -26,7 +27,22 @@ namespace tailor {
 void write_group_boxes(const BatchBounds& bounds, int first_lane, std::uint32_t leaf_bits,
                        int count, FloatBox* first, std::size_t stride);
 
+/// write_group_boxes() for the nodes' diagonal bounds: the same subtree, leaves and
+/// order, a DiagonalBox (32 bytes, written whole) at `first` plus i·`stride` bytes.
+void write_group_diagonal_boxes(const DiagonalBatchBounds& bounds, int first_lane,
+                                std::uint32_t leaf_bits, int count, DiagonalBox* first,
+                                std::size_t stride);
+
 namespace detail {
+/// write_group_diagonal_boxes() with two SSE2 vectors per box and with one AVX2 vector per
+/// box (call only when direction_mask_has_avx2()); exposed so that a test can check they
+/// agree.
+void write_group_diagonal_boxes_sse2(const DiagonalBatchBounds& bounds, int first_lane,
+                                     std::uint32_t leaf_bits, int count, DiagonalBox* first,
+                                     std::size_t stride);
+void write_group_diagonal_boxes_avx2(const DiagonalBatchBounds& bounds, int first_lane,
+                                     std::uint32_t leaf_bits, int count, DiagonalBox* first,
+                                     std::size_t stride);
 /// write_group_boxes() with two SSE2 vectors per box (any x86-64 processor), and with one
 /// AVX2 vector per box (call only when direction_mask_has_avx2()), which rewrites
 /// the eight bytes after each box with their own value. Exposed so that a test can check

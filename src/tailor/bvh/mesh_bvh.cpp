@@ -231,7 +231,8 @@ void MeshBvh::refit_groups(Index first, Index end, Index faces, const Positions&
                batch);
   // Leaf boxes: per frame, coordinate and lane, the three corners' extremes, rounded
   // outward.
-  BatchBounds start, end_bounds, diagonal_start, diagonal_end;
+  BatchBounds start, end_bounds;
+  DiagonalBatchBounds diagonal_start, diagonal_end;
   if (parts.boxes) batch_bounds(batch, start, end_bounds);
   if (parts.diagonals) diagonal_batch_bounds(batch, diagonal_start, diagonal_end);
   LaneMasks masks;
@@ -253,10 +254,10 @@ void MeshBvh::refit_groups(Index first, Index end, Index faces, const Positions&
                         sizeof(Node));
     }
     if (parts.diagonals) {
-      write_group_boxes(diagonal_start, lane, group.leaf_bits, count,
-                        &m_nodes[group.root].diagonal_start, sizeof(Node));
-      write_group_boxes(diagonal_end, lane, group.leaf_bits, count,
-                        &m_nodes[group.root].diagonal_end, sizeof(Node));
+      write_group_diagonal_boxes(diagonal_start, lane, group.leaf_bits, count,
+                                 &m_nodes[group.root].diagonal_start, sizeof(Node));
+      write_group_diagonal_boxes(diagonal_end, lane, group.leaf_bits, count,
+                                 &m_nodes[group.root].diagonal_end, sizeof(Node));
     }
     if (parts.directions) m_masks[group.mask_slot] = and_of_masks(masks, lane, lane + count);
     lane += count;
@@ -270,8 +271,8 @@ void MeshBvh::join_children(Index node, bool diagonals) {
   Node& record = m_nodes[node];
   const Node& left = m_nodes[node + 1];
   const Node& right = m_nodes[record.right_or_face];
-  const auto join = [](FloatBox& box, const FloatBox& a, const FloatBox& b) {
-    for (int k = 0; k < 3; ++k) {
+  const auto join = [](auto& box, const auto& a, const auto& b) {
+    for (std::size_t k = 0; k < box.min.size(); ++k) {
       box.min[k] = b.min[k] < a.min[k] ? b.min[k] : a.min[k];
       box.max[k] = b.max[k] > a.max[k] ? b.max[k] : a.max[k];
     }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "tailor/bvh/bvh_layout.hpp"
+#include "tailor/bvh/diagonal_bounds.hpp"
 #include "tailor/bvh/direction_mask.hpp"
 #include "tailor/bvh/float_box.hpp"
 #include "tailor/bvh/step_boxes.hpp"
@@ -28,7 +29,7 @@ namespace tailor {
 ///
 /// Layout (BvhLayout): pre-order, the left child of inner node i is i + 1. Each node is
 /// one 128-byte record, two cache lines (box at t = 0, right child or face, face count, box
-/// at t = 1; then the bounds along three diagonals at t = 0 and t = 1, diagonal_bounds.hpp),
+/// at t = 1; then the bounds along the four diagonals at t = 0 and t = 1, diagonal_bounds.hpp),
 /// 256 bytes per face, plus the corners of each face in leaf order (12 bytes) so
 /// the refit reads them in sequence.
 ///
@@ -82,9 +83,9 @@ class MeshBvh {
   const FloatBox& end_box(Index node) const { return m_nodes[node].end; }
   /// Bounds of a node's corners at x0 along the diagonals of diagonal_bounds.hpp: min[k] and
   /// max[k] along d_k (valid after refit).
-  const FloatBox& diagonal_start_box(Index node) const { return m_nodes[node].diagonal_start; }
+  const DiagonalBox& diagonal_start_box(Index node) const { return m_nodes[node].diagonal_start; }
   /// The same at x1.
-  const FloatBox& diagonal_end_box(Index node) const { return m_nodes[node].diagonal_end; }
+  const DiagonalBox& diagonal_end_box(Index node) const { return m_nodes[node].diagonal_end; }
   /// Whether faces of `node` and faces of `other`'s node `other_node` may meet during the
   /// refitted step: may_meet_over_step() of their boxes, then of their diagonal bounds
   /// (diagonal_bounds.hpp) when both trees were refitted with them.
@@ -149,12 +150,9 @@ class MeshBvh {
     Index count = 0;
     FloatBox end;
     std::uint64_t unused = 0;
-    // Bounds along the diagonals of diagonal_bounds.hpp (min[k], max[k] along d_k), in the
-    // record's second cache line, laid out as the boxes are for write_group_boxes().
-    FloatBox diagonal_start;
-    std::uint64_t unused_start = 0;
-    FloatBox diagonal_end;
-    std::uint64_t unused_end = 0;
+    // Bounds along the diagonals (diagonal_bounds.hpp): the record's second cache line.
+    DiagonalBox diagonal_start;
+    DiagonalBox diagonal_end;
   };
   struct Group {
     Index root, first_leaf;  // its leaves are first_leaf, first_leaf + 1, ... (leaf order)

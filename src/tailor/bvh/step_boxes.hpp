@@ -16,6 +16,9 @@
 /// conservative, and so does clamping beyond the float range (monotone: a strict order of
 /// clamped bounds is one of the bounds themselves).
 
+#include <cstddef>
+#include <iterator>
+
 #include "tailor/bvh/aabb.hpp"
 #include "tailor/bvh/float_box.hpp"
 
@@ -24,14 +27,15 @@ namespace tailor {
 /// Whether sets A and B, with boxes `a_start`, `b_start` at t = 0 and `a_end`, `b_end` at t = 1,
 /// may meet during the step: false when one axis keeps them apart, in one order, at both ends.
 /// `Box` is any box with `min[k]` and `max[k]` per axis: FloatBox (the trees), or exact double
-/// bounds (the primitive boxes of the low level).
+/// bounds (the primitive boxes of the low level); or per fixed direction (DiagonalBox: the
+/// argument holds for any direction, diagonal_bounds.hpp).
 template <class Box>
 bool may_meet_over_step(const Box& a_start, const Box& a_end, const Box& b_start,
                         const Box& b_end) {
   // Combined without branches (unsigned: the traversal runs this for every node pair, and
   // which way it goes is hard to predict).
   unsigned apart = 0;
-  for (int k = 0; k < 3; ++k) {
+  for (std::size_t k = 0; k < std::size(a_start.min); ++k) {
     apart |= unsigned{a_start.max[k] < b_start.min[k]} & unsigned{a_end.max[k] < b_end.min[k]};
     apart |= unsigned{b_start.max[k] < a_start.min[k]} & unsigned{b_end.max[k] < a_end.min[k]};
   }
