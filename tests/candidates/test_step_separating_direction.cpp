@@ -9,18 +9,13 @@
 #include <random>
 
 #include "support/sanitized.hpp"
+#include "support/triangle_pairs.hpp"
 #include "tailor/candidates/step_separating_direction.hpp"
-#include "tailor/ccd/ccd.hpp"
 
 namespace tailor {
 namespace {
 
-// Pairs of moving triangles: pair i is faces 2i and 2i + 1 over vertices 6i to 6i + 5.
-struct TrianglePairs {
-  FaceArray faces;
-  Positions x0, x1;
-  std::vector<TrianglePair> pairs;
-};
+using testing::TrianglePairs;
 
 // The second triangle of pair i is a copy of the first moved by `shift0` at t = 0 and by
 // `shift1` at t = 1, then jittered (or not: on the dyadic lattice, copies touch exactly).
@@ -72,32 +67,16 @@ TrianglePairs make_pairs(int count, unsigned seed) {
   return t;
 }
 
-Vec3 at(const Positions& x, Index v) {
-  return x.row(v).transpose();
-}
-
 // Whether any vertex-face or edge-edge pair of the two faces of pair i collides.
 bool any_collision(const TrianglePairs& t, std::size_t i) {
-  const Index face[2] = {t.pairs[i].first, t.pairs[i].second};
-  const auto x = [&](const Positions& p, int side, int k) { return at(p, t.faces(face[side], k)); };
   for (int side = 0; side < 2; ++side) {
-    const int o = 1 - side;
     for (int k = 0; k < 3; ++k) {
-      if (vertex_face_ccd({x(t.x0, side, k), x(t.x0, o, 0), x(t.x0, o, 1), x(t.x0, o, 2),
-                           x(t.x1, side, k), x(t.x1, o, 0), x(t.x1, o, 1), x(t.x1, o, 2)})
-              .hit) {
-        return true;
-      }
+      if (testing::vertex_face_collides(t, i, side, k)) return true;
     }
   }
   for (int a = 0; a < 3; ++a) {
     for (int b = 0; b < 3; ++b) {
-      const int a1 = (a + 1) % 3, b1 = (b + 1) % 3;
-      if (edge_edge_ccd({x(t.x0, 0, a), x(t.x0, 0, a1), x(t.x0, 1, b), x(t.x0, 1, b1),
-                         x(t.x1, 0, a), x(t.x1, 0, a1), x(t.x1, 1, b), x(t.x1, 1, b1)})
-              .hit) {
-        return true;
-      }
+      if (testing::edge_edge_collides(t, i, a, b)) return true;
     }
   }
   return false;

@@ -10,19 +10,15 @@
 #include <random>
 
 #include "support/sanitized.hpp"
+#include "support/triangle_pairs.hpp"
 #include "tailor/candidates/triangle_plane_sides.hpp"
-#include "tailor/ccd/ccd.hpp"
 #include "tailor/geometry/coplanarity_sign.hpp"
 
 namespace tailor {
 namespace {
 
-// Pairs of moving triangles: pair i is faces 2i and 2i + 1 over vertices 6i to 6i + 5.
-struct TrianglePairs {
-  FaceArray faces;
-  Positions x0, x1;
-  std::vector<TrianglePair> pairs;
-};
+using testing::at;
+using testing::TrianglePairs;
 
 // Triangles near one another, often crossing, touching or coplanar: on a coarse dyadic
 // lattice (exact touches), random, nearly flat, near but apart (one triangle above the
@@ -66,10 +62,6 @@ TrianglePairs make_pairs(int count, unsigned seed) {
     t.pairs.push_back({2 * i, 2 * i + 1});
   }
   return t;
-}
-
-Vec3 at(const Positions& x, Index v) {
-  return x.row(v).transpose();
 }
 
 // The exact sign of corner `corner` of face `points` against the plane of face `plane`.
@@ -128,15 +120,9 @@ TEST(TrianglePlaneSides, WhatTheSidesExcludeNeverCollides) {
   for (std::size_t i = 0; i < t.pairs.size(); ++i) {
     const TrianglePairSides s = sides[i];
     separated += s.separated();
-    const Index face[2] = {t.pairs[i].first, t.pairs[i].second};
-    auto x = [&](const Positions& p, int side, int k) { return at(p, t.faces(face[side], k)); };
     for (int side = 0; side < 2; ++side) {
-      const int other = 1 - side;
       for (int k = 0; k < 3; ++k) {
-        const bool hit = vertex_face_ccd({x(t.x0, side, k), x(t.x0, other, 0), x(t.x0, other, 1),
-                                          x(t.x0, other, 2), x(t.x1, side, k), x(t.x1, other, 0),
-                                          x(t.x1, other, 1), x(t.x1, other, 2)})
-                             .hit;
+        const bool hit = testing::vertex_face_collides(t, i, side, k);
         const int bit =
             side == 0 ? TrianglePairSides::first_corner(k) : TrianglePairSides::second_corner(k);
         const bool off = s.separated() || s.corner_off_plane(bit);
@@ -148,10 +134,7 @@ TEST(TrianglePlaneSides, WhatTheSidesExcludeNeverCollides) {
     for (int a = 0; a < 3; ++a) {
       for (int b = 0; b < 3; ++b) {
         const int a1 = (a + 1) % 3, b1 = (b + 1) % 3;
-        const bool hit =
-            edge_edge_ccd({x(t.x0, 0, a), x(t.x0, 0, a1), x(t.x0, 1, b), x(t.x0, 1, b1),
-                           x(t.x1, 0, a), x(t.x1, 0, a1), x(t.x1, 1, b), x(t.x1, 1, b1)})
-                .hit;
+        const bool hit = testing::edge_edge_collides(t, i, a, b);
         const bool off = s.separated() ||
                          s.segment_off_plane(TrianglePairSides::first_corner(a),
                                              TrianglePairSides::first_corner(a1)) ||

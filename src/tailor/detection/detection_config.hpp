@@ -50,7 +50,7 @@ inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
          "the contour test that makes normal-cone culling sound; off, the cone alone skips a "    \
          "node and collisions can be missed (for comparison only)")                               \
   SWITCH(diagonal_bounds, true, "diagonal-bounds", work_only,                                     \
-         "bounds along three diagonals beside each BVH node's box: the traversal skips node "     \
+         "bounds along the four diagonals beside each BVH node's box: the traversal skips node "     \
          "pairs kept apart along one of them at both ends of the step (bvh/diagonal_bounds.hpp)") \
   SWITCH(adjacency_culling, true, "adjacency", work_only,                                         \
          "adjacency culling: no triangle pairs sharing a vertex (their pairs come from the "      \
