@@ -19,7 +19,7 @@ using testing::TrianglePairs;
 
 // The second triangle of pair i is a copy of the first moved by `shift0` at t = 0 and by
 // `shift1` at t = 1, then jittered (or not: on the dyadic lattice, copies touch exactly).
-TrianglePairs make_pairs(int count, unsigned seed) {
+TrianglePairs make_shifted_pairs(int count, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_int_distribution<int> cell(-4, 4);
   std::uniform_real_distribution<double> uniform(-1, 1);
@@ -84,7 +84,7 @@ bool any_collision(const TrianglePairs& t, std::size_t i) {
 
 TEST(StepSeparatingDirection, ApartPairsNeverCollideAndEveryBuildAgrees) {
   const int count = testing::sanitized() ? 4000 : 40000;
-  const TrianglePairs t = make_pairs(count, 3);
+  const TrianglePairs t = make_shifted_pairs(count, 3);
   std::vector<TrianglePairSides> widest(t.pairs.size()), two_lanes(t.pairs.size());
   mark_pairs_apart(t.faces, t.x0, t.x1, t.pairs, widest);
   detail::mark_pairs_apart_two_lanes(t.faces, t.x0, t.x1, t.pairs, two_lanes);
@@ -110,7 +110,7 @@ TEST(StepSeparatingDirection, ApartPairsNeverCollideAndEveryBuildAgrees) {
 
 // A pair the plane filter already separated is left alone; the others get the filter.
 TEST(StepSeparatingDirection, OnlyPairsNotYetSeparatedAreTested) {
-  const TrianglePairs t = make_pairs(64, 4);
+  const TrianglePairs t = make_shifted_pairs(64, 4);
   std::vector<TrianglePairSides> sides(t.pairs.size());
   mark_pairs_apart(t.faces, t.x0, t.x1, t.pairs, sides);
   std::vector<TrianglePairSides> marked(t.pairs.size());
@@ -128,7 +128,7 @@ TEST(StepSeparatingDirection, OnlyPairsNotYetSeparatedAreTested) {
 
 // A NaN or an infinity anywhere in a pair that is otherwise apart: never certified.
 TEST(StepSeparatingDirection, NonFiniteCornersAreNeverApart) {
-  TrianglePairs t = make_pairs(1, 5);
+  TrianglePairs t = make_shifted_pairs(1, 5);
   t.x0.setZero();
   t.x0.topRows(3) << 0, 0, 0, 1, 0, 0, 0, 1, 0;     // A in z = 0
   t.x0.bottomRows(3) << 0, 0, 1, 1, 0, 1, 0, 1, 1;  // B a unit above it, crossed edges apart

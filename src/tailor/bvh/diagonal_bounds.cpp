@@ -11,8 +11,9 @@ namespace {
 // (one frame): per direction, the least p - e and the greatest p + e (the header's margin),
 // rounded outward to float.
 template <int W>
-[[gnu::always_inline]] inline void lane_bounds(const MovingTriangleBatch& batch, int i,
-                                               int first_corner, DiagonalBatchBounds& out) {
+[[gnu::always_inline]] inline void diagonal_lane_bounds(const MovingTriangleBatch& batch, int i,
+                                                        int first_corner,
+                                                        DiagonalBatchBounds& out) {
   using Lanes = typename lanes::Vectors<W>::Lanes;
   const auto& c = batch.coordinate;
   Lanes low[kDiagonals], high[kDiagonals];
@@ -41,36 +42,37 @@ template <int W>
 }
 
 template <int W>
-[[gnu::always_inline]] inline void bounds(const MovingTriangleBatch& batch,
-                                          DiagonalBatchBounds& start, DiagonalBatchBounds& end) {
+[[gnu::always_inline]] inline void diagonal_bounds(const MovingTriangleBatch& batch,
+                                                   DiagonalBatchBounds& start,
+                                                   DiagonalBatchBounds& end) {
   for (int i = 0; i < batch.padded_count(); i += W) {
-    lane_bounds<W>(batch, i, 0, start);
-    lane_bounds<W>(batch, i, 3, end);
+    diagonal_lane_bounds<W>(batch, i, 0, start);
+    diagonal_lane_bounds<W>(batch, i, 3, end);
   }
 }
 
-void bounds_sse2(const MovingTriangleBatch& batch, DiagonalBatchBounds& start,
-                 DiagonalBatchBounds& end) {
-  bounds<2>(batch, start, end);
+void diagonal_bounds_sse2(const MovingTriangleBatch& batch, DiagonalBatchBounds& start,
+                          DiagonalBatchBounds& end) {
+  diagonal_bounds<2>(batch, start, end);
 }
 
-[[gnu::target("avx2")]] void bounds_avx2(const MovingTriangleBatch& batch,
-                                         DiagonalBatchBounds& start, DiagonalBatchBounds& end) {
-  bounds<4>(batch, start, end);
+[[gnu::target("avx2")]] void diagonal_bounds_avx2(const MovingTriangleBatch& batch,
+                                                  DiagonalBatchBounds& start,
+                                                  DiagonalBatchBounds& end) {
+  diagonal_bounds<4>(batch, start, end);
 }
 
 // Eight lanes at a time, the last four (a batch is padded to a multiple of four) as above.
-[[gnu::target("avx512f,avx512dq,avx2")]] void bounds_avx512(const MovingTriangleBatch& batch,
-                                                            DiagonalBatchBounds& start,
-                                                            DiagonalBatchBounds& end) {
+[[gnu::target("avx512f,avx512dq,avx2")]] void diagonal_bounds_avx512(
+    const MovingTriangleBatch& batch, DiagonalBatchBounds& start, DiagonalBatchBounds& end) {
   int i = 0;
   for (; i + 8 <= batch.padded_count(); i += 8) {
-    lane_bounds<8>(batch, i, 0, start);
-    lane_bounds<8>(batch, i, 3, end);
+    diagonal_lane_bounds<8>(batch, i, 0, start);
+    diagonal_lane_bounds<8>(batch, i, 3, end);
   }
   if (i < batch.padded_count()) {
-    lane_bounds<4>(batch, i, 0, start);
-    lane_bounds<4>(batch, i, 3, end);
+    diagonal_lane_bounds<4>(batch, i, 0, start);
+    diagonal_lane_bounds<4>(batch, i, 3, end);
   }
 }
 
@@ -78,7 +80,8 @@ void bounds_sse2(const MovingTriangleBatch& batch, DiagonalBatchBounds& start,
 
 void diagonal_batch_bounds(const MovingTriangleBatch& batch, DiagonalBatchBounds& start,
                            DiagonalBatchBounds& end) {
-  lanes::widest(bounds_avx512, bounds_avx2, bounds_sse2)(batch, start, end);
+  lanes::widest(diagonal_bounds_avx512, diagonal_bounds_avx2, diagonal_bounds_sse2)(batch, start,
+                                                                                    end);
 }
 
 }  // namespace tailor
