@@ -100,8 +100,9 @@ def test_every_preset_equals_brute_force_on_random_steps(seed, n, planar):
 
 @pytest.mark.parametrize(
     "switch",
-    ["normal_cones", "adjacency_culling", "feature_assignment", "primitive_boxes",
-     "coplanarity_filter"])
+    ["normal_cones", "diagonal_bounds", "adjacency_culling", "triangle_filter",
+     "direction_filter", "feature_assignment", "primitive_boxes", "coplanarity_filter",
+     "projection_filter"])
 def test_each_stage_switched_off_alone_still_equals_brute_force(switch):
     faces, x0, x1 = grid_cloth(10, 7, amplitude=2.0)
     config = tailor.DetectionConfig.preset("paper")
