@@ -71,4 +71,11 @@ void gather_batch(const double* x0, const double* x1, std::span<const std::array
                                                                                   batch);
 }
 
+void pad_to_eight_lanes(MovingTriangleBatch& batch) {
+  const int padded = (batch.count + 7) & ~7;
+  for (int row = 0; row < 18; ++row) {
+    for (int i = batch.count; i < padded; ++i) batch.coordinate[row][i] = batch.coordinate[row][0];
+  }
+}
+
 }  // namespace tailor

@@ -16,6 +16,10 @@ namespace tailor {
 void gather_batch(const double* x0, const double* x1, std::span<const std::array<Index, 3>> faces,
                   MovingTriangleBatch& batch);
 
+/// Repeats lane 0 in the lanes from `count` up to a multiple of eight (the widest vector of
+/// double lanes), for kernels that always run whole AVX-512 vectors.
+void pad_to_eight_lanes(MovingTriangleBatch& batch);
+
 namespace detail {
 /// gather_batch one corner at a time (any processor) and four triangles at a time (AVX2:
 /// call only when direction_mask_has_avx2()): a corner is one masked 4-double load

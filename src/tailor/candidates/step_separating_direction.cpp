@@ -16,14 +16,6 @@ namespace {
 
 using BatchKernel = std::uint32_t (*)(const MovingTriangleBatch&, const MovingTriangleBatch&);
 
-// Lanes past the last pair repeat lane 0, up to a multiple of eight (the widest vector).
-void pad_to_eight(MovingTriangleBatch& batch) {
-  const int padded = (batch.count + 7) & ~7;
-  for (int row = 0; row < 18; ++row) {
-    for (int i = batch.count; i < padded; ++i) batch.coordinate[row][i] = batch.coordinate[row][0];
-  }
-}
-
 void mark_apart(BatchKernel kernel, const FaceArray& faces, const Positions& x0,
                 const Positions& x1, std::span<const TrianglePair> pairs,
                 std::span<TrianglePairSides> sides) {
@@ -38,8 +30,8 @@ void mark_apart(BatchKernel kernel, const FaceArray& faces, const Positions& x0,
   const auto run = [&] {
     gather_batch(x0.data(), x1.data(), std::span(first_faces.data(), count), first);
     gather_batch(x0.data(), x1.data(), std::span(second_faces.data(), count), second);
-    pad_to_eight(first);
-    pad_to_eight(second);
+    pad_to_eight_lanes(first);
+    pad_to_eight_lanes(second);
     const std::uint32_t apart = kernel(first, second);
     for (int lane = 0; lane < count; ++lane) sides[lane_pair[lane]].apart = (apart >> lane) & 1u;
     count = 0;

@@ -21,14 +21,6 @@ struct PairBatches {
 
 using BatchKernel = void (*)(const PairBatches&, TrianglePairSides*);
 
-// Lanes past the last pair repeat lane 0, up to a multiple of eight (the widest vector).
-void pad(MovingTriangleBatch& batch) {
-  const int padded = (batch.count + 7) & ~7;
-  for (int row = 0; row < 18; ++row) {
-    for (int i = batch.count; i < padded; ++i) batch.coordinate[row][i] = batch.coordinate[row][0];
-  }
-}
-
 void pair_sides(BatchKernel kernel, const FaceArray& faces, const Positions& x0,
                 const Positions& x1, std::span<const TrianglePair> pairs,
                 std::span<TrianglePairSides> sides) {
@@ -48,8 +40,8 @@ void pair_sides(BatchKernel kernel, const FaceArray& faces, const Positions& x0,
     }
     gather_batch(x0.data(), x1.data(), std::span(first.data(), count), batches.first);
     gather_batch(x0.data(), x1.data(), std::span(second.data(), count), batches.second);
-    pad(batches.first);
-    pad(batches.second);
+    pad_to_eight_lanes(batches.first);
+    pad_to_eight_lanes(batches.second);
     kernel(batches, lane_sides.data());
     std::copy_n(lane_sides.begin(), count, sides.begin() + static_cast<std::ptrdiff_t>(begin));
   }
