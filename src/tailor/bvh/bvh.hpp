@@ -4,10 +4,14 @@
 
 #include <tbb/parallel_invoke.h>
 
+#include <bit>
+#include <cstdint>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "tailor/bvh/aabb.hpp"
+#include "tailor/bvh/step_box_columns.hpp"
 #include "tailor/bvh/step_boxes.hpp"
 
 namespace tailor {
@@ -87,6 +91,12 @@ class BasicBvh {
  private:
   // Subtrees with fewer primitives than this are handled by one task.
   static constexpr Index kParallelGrain = 2048;
+  // Two subtrees of at most this many primitives each are compared primitive by primitive
+  // (their boxes lie side by side in leaf order): for StepBoxes, compared eight at once,
+  // visiting the nodes between them costs more than the comparisons they spare.
+  static constexpr bool kColumns = std::is_same_v<Box, StepBox>;
+  static constexpr Index kBucket = kColumns ? StepBoxColumns::kLanes : 1;
+  struct NoColumns {};
 
   template <class Update>
   void bottom_up_recursive(Index node, Update& update) const {
@@ -105,6 +115,10 @@ class BasicBvh {
   void pair_recursive(Index a, const BasicBvh& other, Index b, Visit& visit) const;
   template <class Visit>
   void self_recursive(Index a, Visit& visit) const;
+  template <class Visit>
+  void bucket_pairs(Index a, const BasicBvh& other, Index b, Visit& visit) const;
+  template <class Visit>
+  void bucket_self_pairs(Index a, Visit& visit) const;
   template <class Local, class Visit>
   void parallel_pair(Index a, const BasicBvh& other, Index b, Local& local, Visit& visit) const;
   template <class Local, class Visit>
@@ -114,6 +128,8 @@ class BasicBvh {
   std::vector<Index> m_first, m_count;           // range in m_primitive_order
   std::vector<Index> m_primitive_order, m_leaf_of_primitive;
   std::vector<Box> m_boxes;
+  std::vector<Box> m_ordered_boxes;  // the box of primitive_order()[i], for the buckets
+  [[no_unique_address]] std::conditional_t<kColumns, StepBoxColumns, NoColumns> m_columns;
 };
 
 /// A BVH over static boxes (or swept ones).
@@ -137,8 +153,8 @@ template <class Visit>
 void BasicBvh<Box>::pair_recursive(Index a, const BasicBvh& other, Index b, Visit& visit) const {
   if (!m_boxes[a].overlaps(other.m_boxes[b])) return;
   const bool a_leaf = is_leaf(a), b_leaf = other.is_leaf(b);
-  if (a_leaf && b_leaf) {
-    visit(primitive(a), other.primitive(b));
+  if (m_count[a] <= kBucket && other.m_count[b] <= kBucket) {
+    bucket_pairs(a, other, b, visit);
   } else if (b_leaf || (!a_leaf && m_count[a] >= other.m_count[b])) {
     pair_recursive(m_left[a], other, b, visit);
     pair_recursive(m_right[a], other, b, visit);
@@ -151,10 +167,51 @@ void BasicBvh<Box>::pair_recursive(Index a, const BasicBvh& other, Index b, Visi
 template <class Box>
 template <class Visit>
 void BasicBvh<Box>::self_recursive(Index a, Visit& visit) const {
-  if (is_leaf(a)) return;
+  if (m_count[a] <= kBucket) return bucket_self_pairs(a, visit);
   self_recursive(m_left[a], visit);
   self_recursive(m_right[a], visit);
   pair_recursive(m_left[a], *this, m_right[a], visit);
+}
+
+template <class Box>
+template <class Visit>
+void BasicBvh<Box>::bucket_pairs(Index a, const BasicBvh& other, Index b, Visit& visit) const {
+  const Index first_a = m_first[a], first_b = other.m_first[b];
+  for (Index i = first_a; i < first_a + m_count[a]; ++i) {
+    const Box& box = m_ordered_boxes[i];
+    if constexpr (kColumns) {
+      for (std::uint32_t mask = other.m_columns.may_meet_mask(box, first_b, other.m_count[b]);
+           mask != 0; mask &= mask - 1) {
+        visit(m_primitive_order[i], other.m_primitive_order[first_b + std::countr_zero(mask)]);
+      }
+      continue;
+    }
+    for (Index j = first_b; j < first_b + other.m_count[b]; ++j) {
+      if (box.overlaps(other.m_ordered_boxes[j])) {
+        visit(m_primitive_order[i], other.m_primitive_order[j]);
+      }
+    }
+  }
+}
+
+template <class Box>
+template <class Visit>
+void BasicBvh<Box>::bucket_self_pairs(Index a, Visit& visit) const {
+  const Index first = m_first[a], end = first + m_count[a];
+  for (Index i = first; i < end; ++i) {
+    if constexpr (kColumns) {
+      for (std::uint32_t mask = m_columns.may_meet_mask(m_ordered_boxes[i], i + 1, end - i - 1);
+           mask != 0; mask &= mask - 1) {
+        visit(m_primitive_order[i], m_primitive_order[i + 1 + std::countr_zero(mask)]);
+      }
+      continue;
+    }
+    for (Index j = i + 1; j < end; ++j) {
+      if (m_ordered_boxes[i].overlaps(m_ordered_boxes[j])) {
+        visit(m_primitive_order[i], m_primitive_order[j]);
+      }
+    }
+  }
 }
 
 // The walk of pair_recursive, splitting the same node, with both halves as tasks while the
