@@ -1,8 +1,9 @@
 // BasicBvh's walks against every pair: the pairs of two trees and of one tree with itself,
 // sequential and parallel, equal the pairs brute force finds, for boxes at one instant (Aabb)
 // and boxes at both ends of a step (StepBox, whose walks end in buckets compared eight boxes at
-// a time by StepBoxColumns); and StepBoxColumns' mask equals may_meet_over_step() lane by lane,
-// for every count of boxes, with the lanes past the count holding boxes that would meet.
+// a time by StepBoxColumns); and StepBoxColumns gives back each box, and its mask equals
+// may_meet_over_step() lane by lane, for every count of boxes, with the lanes past the count
+// holding boxes that would meet.
 
 #include <gtest/gtest.h>
 
@@ -115,6 +116,11 @@ TEST(StepBoxColumns, MaskIsMayMeetOverStepForEachLane) {
   StepBoxColumns columns;
   columns.resize(n);
   for (Index i = 0; i < n; ++i) columns.set(i, boxes[i]);
+  for (Index i = 0; i < n; ++i) {
+    const StepBox back = columns.box(i);
+    EXPECT_TRUE(back.start.min == boxes[i].start.min && back.start.max == boxes[i].start.max &&
+                back.end.min == boxes[i].end.min && back.end.max == boxes[i].end.max);
+  }
   int met = 0, apart = 0;
   for (int trial = 0; trial < 400; ++trial) {
     const StepBox box = random_step_box(rng);

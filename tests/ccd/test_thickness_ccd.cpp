@@ -239,6 +239,81 @@ TEST(ThicknessCcd, AxisTestNeverClaimsAPairTheOracleSeesWithinH) {
   EXPECT_GT(claimed, runs);
 }
 
+bool apart_along_normals(const FourPoints& x0, const FourPoints& x1, PairShape shape, double h) {
+  return apart_along_normals(x0, x1, CornerDifferences(x0, x1, shape), shape, h);
+}
+
+TEST(ThicknessCcd, NormalTestKeepsPairsExactlyHApart) {
+  // A tilted face exactly h beyond p along its normal at both ends (p above its interior):
+  // within h, so not claimed; with 0.99 h claimed. The same for two edges h apart along
+  // their cross product.
+  const double h = 0.1;
+  const Vec3 n = Vec3(1, 2, 2) / 3;
+  const Vec3 e1 = Vec3(2, -1, 0) / std::sqrt(5.0), e2 = n.cross(e1);
+  const Vec3 p = Vec3(0.3, -0.2, 0.5), q = p + h * n;
+  const FourPoints face{p, q - e1 - e2, q + e1 - e2, q + e2};
+  EXPECT_FALSE(apart_along_normals(face, face, PairShape::vertex_face, h));
+  EXPECT_TRUE(apart_along_normals(face, face, PairShape::vertex_face, 0.99 * h));
+  const FourPoints edges{p - e1, p + e1, q - e2, q + e2};
+  EXPECT_FALSE(apart_along_normals(edges, edges, PairShape::edge_edge, h));
+  EXPECT_TRUE(apart_along_normals(edges, edges, PairShape::edge_edge, 0.99 * h));
+  // Beyond at t = 0, through the face at t = 1: not claimed for any h.
+  FourPoints through = face;
+  through[0] = p + 2 * h * n;
+  EXPECT_FALSE(apart_along_normals(face, through, PairShape::vertex_face, 1e-6));
+}
+
+TEST(ThicknessCcd, NormalTestNeverClaimsAPairTheOracleSeesWithinH) {
+  // Layers along a random direction: the second primitive a random gap beyond the first,
+  // the whole pair turned by a random small rotation over the step and moved, with a
+  // relative motion that brings a third of the pairs through each other. Whenever the
+  // normal test claims "more than h apart", the sampled distance (an upper bound of the
+  // true minimum) must exceed h; it must claim some pairs; and at h above the sampled
+  // minimum it must claim none.
+  std::mt19937_64 rng(29);
+  std::uniform_real_distribution<double> coordinate(-1, 1), gap(0.01, 0.4), angle(-0.3, 0.3),
+      closing(-0.6, 0.1);
+  const auto point = [&] { return Vec3(coordinate(rng), coordinate(rng), coordinate(rng)); };
+  const int runs = testing::sanitized() ? 200 : 2000, samples = 2000;
+  int claimed = 0;
+  for (int i = 0; i < runs; ++i) {
+    const Vec3 n = point().normalized();
+    FourPoints x0{point(), point(), point(), point()};
+    const auto lift = [&](int j, double by) { x0[j] += (by - n.dot(x0[j] - x0[0])) * n; };
+    lift(1, 0.02 * coordinate(rng));  // the edge pair's first edge: roughly level with corner 0
+    for (int j = 2; j < 4; ++j) lift(j, gap(rng));
+    if (i % 2 == 0) lift(1, gap(rng));  // vertex-face: the whole face beyond p
+    const Eigen::Matrix3d turn =
+        Eigen::AngleAxisd(angle(rng), point().normalized()).toRotationMatrix();
+    const Vec3 carried = point(), relative = closing(rng) * n;
+    FourPoints x1;
+    for (int j = 0; j < 4; ++j)
+      x1[j] = turn * (x0[j] + (j >= 2 ? relative : Vec3::Zero())) + carried;
+    const auto at = [&](int j, double t) {
+      return testing::wide(Vec3((1 - t) * x0[j] + t * x1[j]));
+    };
+    const Sampled vf = sample(
+        [&](double t) {
+          return testing::point_triangle_distance(at(0, t), at(1, t), at(2, t), at(3, t));
+        },
+        0, samples);
+    const Sampled ee = sample(
+        [&](double t) { return testing::segment_distance(at(0, t), at(1, t), at(2, t), at(3, t)); },
+        0, samples);
+    for (const double share : {0.25, 0.5, 0.9, 1.0, 1.01}) {
+      for (const auto& [shape, s] :
+           {std::pair{PairShape::vertex_face, vf}, std::pair{PairShape::edge_edge, ee}}) {
+        const double h = static_cast<double>(s.minimum) * share + 1e-12;
+        if (apart_along_normals(x0, x1, shape, h)) {
+          ++claimed;
+          EXPECT_GT(s.minimum, h) << i << " share " << share;
+        }
+      }
+    }
+  }
+  EXPECT_GT(claimed, runs / 2);
+}
+
 TEST(ThicknessCcd, WitnessClaimsOnlyPairsWithinH) {
   // Random configurations at three scales, alone and as the time t of a random step: the
   // witness "within h at this instant" may claim a pair only when the long-double

@@ -18,7 +18,6 @@ BasicBvh<Box>::BasicBvh(std::span<const Box> primitive_boxes) {
   m_parent.assign(num_nodes, -1);
   m_first.assign(num_nodes, 0);
   m_boxes.resize(num_nodes);
-  m_ordered_boxes.resize(static_cast<std::size_t>(n));
   if constexpr (kColumns) m_columns.resize(n);
   m_leaf_of_primitive.assign(n, -1);
   m_primitive_order.resize(n);
@@ -43,7 +42,6 @@ void BasicBvh<Box>::refit(std::span<const Box> primitive_boxes) {
   for_each_node_bottom_up([&](Index node) {
     if (is_leaf(node)) {
       m_boxes[node] = primitive_boxes[primitive(node)];
-      m_ordered_boxes[m_first[node]] = m_boxes[node];
       if constexpr (kColumns) m_columns.set(m_first[node], m_boxes[node]);
     } else {
       m_boxes[node] = m_boxes[m_left[node]];

@@ -128,7 +128,7 @@ class BasicBvh {
   std::vector<Index> m_first, m_count;           // range in m_primitive_order
   std::vector<Index> m_primitive_order, m_leaf_of_primitive;
   std::vector<Box> m_boxes;
-  std::vector<Box> m_ordered_boxes;  // the box of primitive_order()[i], for the buckets
+  // StepBoxes: the box of primitive_order()[i] at i, for the buckets.
   [[no_unique_address]] std::conditional_t<kColumns, StepBoxColumns, NoColumns> m_columns;
 };
 
@@ -154,7 +154,11 @@ void BasicBvh<Box>::pair_recursive(Index a, const BasicBvh& other, Index b, Visi
   if (!m_boxes[a].overlaps(other.m_boxes[b])) return;
   const bool a_leaf = is_leaf(a), b_leaf = other.is_leaf(b);
   if (m_count[a] <= kBucket && other.m_count[b] <= kBucket) {
-    bucket_pairs(a, other, b, visit);
+    if constexpr (kColumns) {
+      bucket_pairs(a, other, b, visit);
+    } else {
+      visit(primitive(a), other.primitive(b));  // two leaves
+    }
   } else if (b_leaf || (!a_leaf && m_count[a] >= other.m_count[b])) {
     pair_recursive(m_left[a], other, b, visit);
     pair_recursive(m_right[a], other, b, visit);
@@ -167,7 +171,10 @@ void BasicBvh<Box>::pair_recursive(Index a, const BasicBvh& other, Index b, Visi
 template <class Box>
 template <class Visit>
 void BasicBvh<Box>::self_recursive(Index a, Visit& visit) const {
-  if (m_count[a] <= kBucket) return bucket_self_pairs(a, visit);
+  if (m_count[a] <= kBucket) {
+    if constexpr (kColumns) bucket_self_pairs(a, visit);
+    return;
+  }
   self_recursive(m_left[a], visit);
   self_recursive(m_right[a], visit);
   pair_recursive(m_left[a], *this, m_right[a], visit);
@@ -178,18 +185,10 @@ template <class Visit>
 void BasicBvh<Box>::bucket_pairs(Index a, const BasicBvh& other, Index b, Visit& visit) const {
   const Index first_a = m_first[a], first_b = other.m_first[b];
   for (Index i = first_a; i < first_a + m_count[a]; ++i) {
-    const Box& box = m_ordered_boxes[i];
-    if constexpr (kColumns) {
-      for (std::uint32_t mask = other.m_columns.may_meet_mask(box, first_b, other.m_count[b]);
-           mask != 0; mask &= mask - 1) {
-        visit(m_primitive_order[i], other.m_primitive_order[first_b + std::countr_zero(mask)]);
-      }
-      continue;
-    }
-    for (Index j = first_b; j < first_b + other.m_count[b]; ++j) {
-      if (box.overlaps(other.m_ordered_boxes[j])) {
-        visit(m_primitive_order[i], other.m_primitive_order[j]);
-      }
+    for (std::uint32_t mask =
+             other.m_columns.may_meet_mask(m_columns.box(i), first_b, other.m_count[b]);
+         mask != 0; mask &= mask - 1) {
+      visit(m_primitive_order[i], other.m_primitive_order[first_b + std::countr_zero(mask)]);
     }
   }
 }
@@ -199,17 +198,9 @@ template <class Visit>
 void BasicBvh<Box>::bucket_self_pairs(Index a, Visit& visit) const {
   const Index first = m_first[a], end = first + m_count[a];
   for (Index i = first; i < end; ++i) {
-    if constexpr (kColumns) {
-      for (std::uint32_t mask = m_columns.may_meet_mask(m_ordered_boxes[i], i + 1, end - i - 1);
-           mask != 0; mask &= mask - 1) {
-        visit(m_primitive_order[i], m_primitive_order[i + 1 + std::countr_zero(mask)]);
-      }
-      continue;
-    }
-    for (Index j = i + 1; j < end; ++j) {
-      if (m_ordered_boxes[i].overlaps(m_ordered_boxes[j])) {
-        visit(m_primitive_order[i], m_primitive_order[j]);
-      }
+    for (std::uint32_t mask = m_columns.may_meet_mask(m_columns.box(i), i + 1, end - i - 1);
+         mask != 0; mask &= mask - 1) {
+      visit(m_primitive_order[i], m_primitive_order[i + 1 + std::countr_zero(mask)]);
     }
   }
 }

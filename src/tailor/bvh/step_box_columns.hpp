@@ -38,6 +38,18 @@ class StepBoxColumns {
       m_columns[kEndMax + k][at] = box.end.max[k];
     }
   }
+  /// Box `i`.
+  StepBox box(Index i) const {
+    const auto at = static_cast<std::size_t>(i);
+    StepBox box;
+    for (int k = 0; k < 3; ++k) {
+      box.start.min[k] = m_columns[kStartMin + k][at];
+      box.start.max[k] = m_columns[kStartMax + k][at];
+      box.end.min[k] = m_columns[kEndMin + k][at];
+      box.end.max[k] = m_columns[kEndMax + k][at];
+    }
+    return box;
+  }
   /// Bit j (j < count ≤ kLanes) set when `box` and stored box first + j may meet over the step:
   /// the same comparisons as may_meet_over_step(), eight boxes at a time.
   std::uint32_t may_meet_mask(const StepBox& box, Index first, int count) const {

@@ -68,6 +68,43 @@ bool all_beyond(const Projections& p, double t, double reach) {
   return true;
 }
 
+/// h |u| rounded up (`length` is |u| computed: the norm rounds a few times).
+double reach(double length, double h) {
+  return h * length * (1 + 1e-14);
+}
+
+/// A lower bound of u · d, where `size` is Σ_c |x_c| + |y_c| of d = y - x and `largest` is
+/// max|u_c|: u · d is computed within 5·2^-53 Σ|u_c| (|x_c| + |y_c|) ≤ 1e-15 max|u_c| Σ(|x_c| +
+/// |y_c|) (see the header), plus an absolute 1e-300 for underflow.
+double projection_at_least(const Vec3& u, double largest, const Vec3& d, double size) {
+  return u.dot(d) - (1e-15 * largest * size + 1e-300);
+}
+
+/// Lower bounds of u · d_k at both ends.
+Projections lower_projections(const Vec3& u, const CornerDifferences& d) {
+  const double largest = u.cwiseAbs().maxCoeff();
+  Projections p;
+  p.count = d.count;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(d.count); ++k) {
+    p.start[k] = projection_at_least(u, largest, d.start[k], d.start_size[k]);
+    p.end[k] = projection_at_least(u, largest, d.end[k], d.end_size[k]);
+  }
+  return p;
+}
+
+/// Whether every u · d_k certainly exceeds `reach` at both ends, hence for the whole step
+/// (each is linear in t); stops at the first that does not (most directions fail at once).
+bool beyond_on_step(const Vec3& u, double reach, const CornerDifferences& d) {
+  const double largest = u.cwiseAbs().maxCoeff();
+  for (std::size_t k = 0; k < static_cast<std::size_t>(d.count); ++k) {
+    if (!(projection_at_least(u, largest, d.start[k], d.start_size[k]) > reach) ||
+        !(projection_at_least(u, largest, d.end[k], d.end_size[k]) > reach)) {
+      return false;
+    }
+  }
+  return true;
+}
+
 /// The second primitive's point minus the first's, at weights for which the exact points
 /// lie on the primitives (see the header); nullopt when the weights cannot be made so.
 std::optional<Vec3> witness_difference(const FourPoints& x, PairShape shape) {
@@ -124,45 +161,49 @@ bool apart_along_a_coordinate_axis(const FourPoints& x0, const FourPoints& x1, P
   return false;
 }
 
-ClosestDirectionAdvance::ClosestDirectionAdvance(const FourPoints& x0, const FourPoints& x1,
-                                                 PairShape shape, double h)
-    : m_x0(x0), m_x1(x1), m_shape(shape), m_h(h) {
+CornerDifferences::CornerDifferences(const FourPoints& x0, const FourPoints& x1, PairShape shape) {
   for (const auto& [i, j] : differences(shape)) {
-    const std::size_t k = static_cast<std::size_t>(m_count++);
-    m_start[k] = x0[j] - x0[i];
-    m_end[k] = x1[j] - x1[i];
-    m_start_size[k] = (x0[i].cwiseAbs() + x0[j].cwiseAbs()).sum();
-    m_end_size[k] = (x1[i].cwiseAbs() + x1[j].cwiseAbs()).sum();
+    const std::size_t k = static_cast<std::size_t>(count++);
+    start[k] = x0[j] - x0[i];
+    end[k] = x1[j] - x1[i];
+    start_size[k] = (x0[i].cwiseAbs() + x0[j].cwiseAbs()).sum();
+    end_size[k] = (x1[i].cwiseAbs() + x1[j].cwiseAbs()).sum();
   }
+}
+
+bool apart_along_normals(const FourPoints& x0, const FourPoints& x1, const CornerDifferences& d,
+                         PairShape shape, double h) {
+  for (const FourPoints* x : {&x0, &x1}) {
+    const FourPoints& p = *x;
+    const Vec3 normal = shape == PairShape::vertex_face ? (p[2] - p[1]).cross(p[3] - p[1])
+                                                        : (p[1] - p[0]).cross(p[3] - p[2]);
+    const double length = normal.norm();
+    if (!(length > 0) || !std::isfinite(length)) continue;
+    const double at_least = reach(length, h);
+    if (beyond_on_step(normal, at_least, d) || beyond_on_step(-normal, at_least, d)) return true;
+  }
+  return false;
 }
 
 double ClosestDirectionAdvance::clear_from(double t) const {
   const Vec3 u = closest_direction(positions_at(m_x0, m_x1, t), m_shape);
   const double length = u.norm();
   if (!(length > 0) || !std::isfinite(length)) return t;
-  const double reach = m_h * length * (1 + 1e-14);  // ≥ h |u| (the norm rounds a few times)
-  // u · d_k is computed within 5·2^-53 Σ|u_c| (|x_c| + |y_c|) ≤ 1e-15 max|u_c| Σ(|x_c| +
-  // |y_c|) (see the header), plus an absolute 1e-300 for underflow.
-  const double largest = u.cwiseAbs().maxCoeff();
-  Projections p;
-  p.count = m_count;
-  for (std::size_t k = 0; k < static_cast<std::size_t>(m_count); ++k) {
-    p.start[k] = u.dot(m_start[k]) - (1e-15 * largest * m_start_size[k] + 1e-300);
-    p.end[k] = u.dot(m_end[k]) - (1e-15 * largest * m_end_size[k] + 1e-300);
-  }
-  if (!all_beyond(p, t, reach)) return t;
+  const double at_least = reach(length, m_h);
+  const Projections p = lower_projections(u, m_differences);
+  if (!all_beyond(p, t, at_least)) return t;
   // Where the first u · d_k would come down to h |u|; just before it, certified.
   double until = 1;
   for (int k = 0; k < p.count; ++k) {
     const double a = p.start[static_cast<std::size_t>(k)], b = p.end[static_cast<std::size_t>(k)];
-    if (b < a) until = std::min(until, (a - reach) / (a - b));
+    if (b < a) until = std::min(until, (a - at_least) / (a - b));
   }
   if (!(until > t)) return t;
   // Linear in t: certified at both ends, certified in between.
-  if (until >= 1) return all_beyond(p, 1.0, reach) ? 1.0 : t;
+  if (until >= 1) return all_beyond(p, 1.0, at_least) ? 1.0 : t;
   for (const double share : {1 - 1e-9, 0.5}) {
     const double end = t + share * (until - t);
-    if (all_beyond(p, end, reach)) return end;
+    if (all_beyond(p, end, at_least)) return end;
   }
   return t;
 }

@@ -54,13 +54,39 @@ bool apart_along_a_coordinate_axis(const FourPoints& x0, const FourPoints& x1, P
 double clear_along_closest_direction(const FourPoints& x0, const FourPoints& x1, PairShape shape,
                                      double t, double h);
 
+/// The differences d_k between the pair's corners (see above) at both ends of a step, with
+/// the sums Σ_c |x_c| + |y_c| their error bounds need: formed once per pair for the tests
+/// along fixed directions below.
+struct CornerDifferences {
+  /// The differences of the pair `x0` (t = 0), `x1` (t = 1), of shape `shape`.
+  CornerDifferences(const FourPoints& x0, const FourPoints& x1, PairShape shape);
+  int count = 0;                                   ///< differences: 3 (vertex-face) or 4
+  std::array<Vec3, 4> start{}, end{};              ///< d_k at t = 0 and t = 1 (rounded)
+  std::array<double, 4> start_size{}, end_size{};  ///< Σ_c |x_c| + |y_c| of each
+};
+
+/// Whether the pair's own normal keeps it more than `h` apart for the whole step, one way
+/// or the other along it: the face's normal (vertex-face) or the cross product of the two
+/// edges (edge-edge), taken at t = 0 and then at t = 1 (a fixed u each, as above). A pair
+/// whose vertex stays beyond the face's plane, or whose edges stay on either side of the
+/// plane they span, by more than h while the plane turns less than the gap allows: on the
+/// funnel's thickness step this clears about 70 % of the candidates that are not within h,
+/// at a fraction of the cost of the first advancement call (which finds the closest points).
+bool apart_along_normals(const FourPoints& x0, const FourPoints& x1, const CornerDifferences& d,
+                         PairShape shape, double h);
+
 /// clear_along_closest_direction() for repeated calls on one pair (the search calls it up
 /// to hundreds of times): the corner differences at both ends and the sums their error
 /// bounds need are formed once. Keeps references to `x0` and `x1`.
 class ClosestDirectionAdvance {
  public:
   /// The pair of points `x0` (t = 0) and `x1` (t = 1), of shape `shape`, against `h`.
-  ClosestDirectionAdvance(const FourPoints& x0, const FourPoints& x1, PairShape shape, double h);
+  ClosestDirectionAdvance(const FourPoints& x0, const FourPoints& x1, PairShape shape, double h)
+      : ClosestDirectionAdvance(x0, x1, CornerDifferences(x0, x1, shape), shape, h) {}
+  /// The same with the pair's differences `d` already formed.
+  ClosestDirectionAdvance(const FourPoints& x0, const FourPoints& x1, const CornerDifferences& d,
+                          PairShape shape, double h)
+      : m_x0(x0), m_x1(x1), m_shape(shape), m_h(h), m_differences(d) {}
   /// t1 ≥ `t` such that no two points of the pair are within h at any time of [t, t1]
   /// (t when nothing is proven), as clear_along_closest_direction().
   double clear_from(double t) const;
@@ -70,9 +96,7 @@ class ClosestDirectionAdvance {
   const FourPoints& m_x1;
   PairShape m_shape;
   double m_h;
-  int m_count = 0;                                 // differences: 3 or 4
-  std::array<Vec3, 4> m_start, m_end;              // d_k at t = 0 and t = 1 (rounded)
-  std::array<double, 4> m_start_size, m_end_size;  // Σ_c |x_c| + |y_c| of each
+  CornerDifferences m_differences;
 };
 
 /// Whether two points of the pair in the configuration `x` (exact coordinates, e.g. a

@@ -116,13 +116,13 @@ enum class Reach { h, widened };
 template <class Conditions, class FindNever>
 class EarliestWithin {
  public:
-  EarliestWithin(const StepPoints& m, PairShape shape, double h, double speed, FindNever find_never,
-                 Conditions conditions)
+  EarliestWithin(const StepPoints& m, const CornerDifferences& differences, PairShape shape,
+                 double h, double speed, FindNever find_never, Conditions conditions)
       : m_(m),
         shape_(shape),
         h_(h),
         speed_(speed),
-        advance_(m.x0, m.x1, shape, h),
+        advance_(m.x0, m.x1, differences, shape, h),
         find_never_(std::move(find_never)),
         conditions_(std::move(conditions)),
         h2_(Ball(h) * Ball(h)),
@@ -301,10 +301,11 @@ class EarliestWithin {
 };
 
 template <class Conditions, class FindNever>
-ThicknessResult earliest_within(const StepPoints& m, PairShape shape, double h, double speed,
-                                FindNever&& find_never, Conditions&& conditions) {
+ThicknessResult earliest_within(const StepPoints& m, const CornerDifferences& differences,
+                                PairShape shape, double h, double speed, FindNever&& find_never,
+                                Conditions&& conditions) {
   return EarliestWithin<std::decay_t<Conditions>, std::decay_t<FindNever>>(
-             m, shape, h, speed, std::forward<FindNever>(find_never),
+             m, differences, shape, h, speed, std::forward<FindNever>(find_never),
              std::forward<Conditions>(conditions))
       .run();
 }
@@ -334,6 +335,8 @@ ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& q, double h) {
   const StepPoints m{{q.p_t0, q.a_t0, q.b_t0, q.c_t0}, {q.p_t1, q.a_t1, q.b_t1, q.c_t1}};
   check_query(m, h, "vertex_face_ccd_within");
   if (apart_along_a_coordinate_axis(m.x0, m.x1, PairShape::vertex_face, h)) return {};
+  const CornerDifferences differences(m.x0, m.x1, PairShape::vertex_face);
+  if (apart_along_normals(m.x0, m.x1, differences, PairShape::vertex_face, h)) return {};
   if (within_by_closest_points(m.x0, PairShape::vertex_face, h)) return within_at_start();
   const double speed = fastest_relative(m, {{0, 1}, {0, 2}, {0, 3}});
   const auto find_never = [&m] {
@@ -343,7 +346,7 @@ ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& q, double h) {
                      false};
     return never;
   };
-  return earliest_within(m, PairShape::vertex_face, h, speed, find_never,
+  return earliest_within(m, differences, PairShape::vertex_face, h, speed, find_never,
                          [](const auto& pts, const auto& h2, const detail::NeverPresent& n) {
                            return detail::vertex_face(pts, h2, n);
                          });
@@ -354,6 +357,8 @@ ThicknessResult edge_edge_ccd_within(const EdgeEdgeQuery& q, double h) {
                      {q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1}};
   check_query(m, h, "edge_edge_ccd_within");
   if (apart_along_a_coordinate_axis(m.x0, m.x1, PairShape::edge_edge, h)) return {};
+  const CornerDifferences differences(m.x0, m.x1, PairShape::edge_edge);
+  if (apart_along_normals(m.x0, m.x1, differences, PairShape::edge_edge, h)) return {};
   if (within_by_closest_points(m.x0, PairShape::edge_edge, h)) return within_at_start();
   const double speed = fastest_relative(m, {{0, 2}, {0, 3}, {1, 2}, {1, 3}});
   const auto find_never = [&m] {
@@ -363,7 +368,7 @@ ThicknessResult edge_edge_ccd_within(const EdgeEdgeQuery& q, double h) {
     never.segment = {cd, cd, ab, ab};
     return never;
   };
-  return earliest_within(m, PairShape::edge_edge, h, speed, find_never,
+  return earliest_within(m, differences, PairShape::edge_edge, h, speed, find_never,
                          [](const auto& pts, const auto& h2, const detail::NeverPresent& n) {
                            return detail::edge_edge(pts, h2, n);
                          });
