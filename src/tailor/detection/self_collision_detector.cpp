@@ -81,7 +81,12 @@ struct SelfCollisionDetector::Impl {
     arena.execute([&] {
       check_positions(mesh, x_build, "the build frame");
       tester.set_thickness(config.thickness);
-      if (config.thickness > 0) return;  // within_thickness() uses none of the structures
+      if (config.thickness > 0) {
+        // The trees of within_thickness(), built here on the build frame as the BVH is for
+        // h = 0; each step refits them.
+        thickness_trees.update(mesh, grown_vertex_boxes(x_build, x_build));
+        return;
+      }
       if (use_radial_view) radial = RadialViewCulling(mesh, x_build, std::move(section_loops));
       // The isolated set needs only the topology: it is built beside the tree and its
       // contours (the contours' recursion is sequential).
@@ -179,13 +184,9 @@ struct SelfCollisionDetector::Impl {
     stats.ccd_exact_fallbacks = tester.exact_fallbacks();
   }
 
-  // Collisions with a thickness h > 0: each vertex's boxes at both ends of the step grown
-  // by h / 2, the vertex-face and edge-edge pairs that may meet (two primitives kept more
-  // than h apart along one axis at both ends, in one order, stay more than h apart for the
-  // whole step: bvh/step_boxes.hpp), and the minimum-separation CCD. The other stages are
-  // off: their arguments hold for touching only (docs/thickness.md).
-  CollisionSet within_thickness(const Positions& x0, const Positions& x1, DetectionStats& stats) {
-    const auto stage = SteadyClock::now();
+  // Each vertex's boxes at the step's start `x0` and end `x1`, grown by h / 2 (rounded
+  // outwards).
+  std::vector<StepBox> grown_vertex_boxes(const Positions& x0, const Positions& x1) const {
     std::vector<StepBox> boxes(static_cast<std::size_t>(mesh.num_vertices()));
     const double half = 0.5 * config.thickness;
     for (Index v = 0; v < mesh.num_vertices(); ++v) {
@@ -193,7 +194,19 @@ struct SelfCollisionDetector::Impl {
           StepBox::holding(grown_outwards(swept_box(x0, x0, {v}), half),
                            grown_outwards(swept_box(x1, x1, {v}), half));
     }
-    thickness_trees.update(mesh, boxes);
+    return boxes;
+  }
+
+  // Collisions with a thickness h > 0: each vertex's boxes at both ends of the step grown
+  // by h / 2, the vertex-face and edge-edge pairs that may meet (two primitives kept more
+  // than h apart along one axis at both ends, in one order, stay more than h apart for the
+  // whole step: bvh/step_boxes.hpp), and the minimum-separation CCD. The other stages are
+  // off: their arguments hold for touching only (docs/thickness.md).
+  CollisionSet within_thickness(const Positions& x0, const Positions& x1, DetectionStats& stats) {
+    const auto refit = SteadyClock::now();
+    thickness_trees.update(mesh, grown_vertex_boxes(x0, x1));
+    stats.refit_ms = milliseconds_since(refit);
+    const auto stage = SteadyClock::now();
     const std::vector<FeaturePairs> parts = thickness_trees.overlapping_pair_parts(mesh);
     stats.traversal_ms = milliseconds_since(stage);
     std::vector<std::span<const VertexFacePair>> vertex_face;
