@@ -11,6 +11,7 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <utility>
 
 #include "support/closest_points.hpp"
 #include "support/sanitized.hpp"
@@ -105,6 +106,22 @@ Sampled sample(Distance&& distance, long double h, int samples) {
     if (d <= h && s.first_within > 1) s.first_within = t;
   }
   return s;
+}
+
+/// The sampled distances over the step of the four points as a vertex-face pair and as an
+/// edge-edge pair (their minima are upper bounds of the true ones).
+std::pair<Sampled, Sampled> sampled_minima(const FourPoints& x0, const FourPoints& x1,
+                                           int samples) {
+  const auto at = [&](int j, double t) { return testing::wide(Vec3((1 - t) * x0[j] + t * x1[j])); };
+  const Sampled vf = sample(
+      [&](double t) {
+        return testing::point_triangle_distance(at(0, t), at(1, t), at(2, t), at(3, t));
+      },
+      0, samples);
+  const Sampled ee = sample(
+      [&](double t) { return testing::segment_distance(at(0, t), at(1, t), at(2, t), at(3, t)); },
+      0, samples);
+  return {vf, ee};
 }
 
 TEST(ThicknessCcd, RandomMotionsAgreeWithTheSampledOracle) {
@@ -208,17 +225,7 @@ TEST(ThicknessCcd, AxisTestNeverClaimsAPairTheOracleSeesWithinH) {
     for (int j = 0; j < 4; ++j) {
       x1[j] = x0[j] + carried + Vec3(wobble(rng), wobble(rng), wobble(rng));
     }
-    const auto at = [&](int j, double t) {
-      return testing::wide(Vec3((1 - t) * x0[j] + t * x1[j]));
-    };
-    const Sampled vf = sample(
-        [&](double t) {
-          return testing::point_triangle_distance(at(0, t), at(1, t), at(2, t), at(3, t));
-        },
-        0, samples);
-    const Sampled ee = sample(
-        [&](double t) { return testing::segment_distance(at(0, t), at(1, t), at(2, t), at(3, t)); },
-        0, samples);
+    const auto [vf, ee] = sampled_minima(x0, x1, samples);
     const VertexFaceQuery vq{x0[0], x0[1], x0[2], x0[3], x1[0], x1[1], x1[2], x1[3]};
     const EdgeEdgeQuery eq{x0[0], x0[1], x0[2], x0[3], x1[0], x1[1], x1[2], x1[3]};
     for (const double share : {0.25, 0.5, 0.9, 1.0, 1.1}) {
@@ -289,17 +296,7 @@ TEST(ThicknessCcd, NormalTestNeverClaimsAPairTheOracleSeesWithinH) {
     FourPoints x1;
     for (int j = 0; j < 4; ++j)
       x1[j] = turn * (x0[j] + (j >= 2 ? relative : Vec3::Zero())) + carried;
-    const auto at = [&](int j, double t) {
-      return testing::wide(Vec3((1 - t) * x0[j] + t * x1[j]));
-    };
-    const Sampled vf = sample(
-        [&](double t) {
-          return testing::point_triangle_distance(at(0, t), at(1, t), at(2, t), at(3, t));
-        },
-        0, samples);
-    const Sampled ee = sample(
-        [&](double t) { return testing::segment_distance(at(0, t), at(1, t), at(2, t), at(3, t)); },
-        0, samples);
+    const auto [vf, ee] = sampled_minima(x0, x1, samples);
     for (const double share : {0.25, 0.5, 0.9, 1.0, 1.01}) {
       for (const auto& [shape, s] :
            {std::pair{PairShape::vertex_face, vf}, std::pair{PairShape::edge_edge, ee}}) {

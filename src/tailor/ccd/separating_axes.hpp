@@ -60,9 +60,11 @@ double clear_along_closest_direction(const FourPoints& x0, const FourPoints& x1,
 struct CornerDifferences {
   /// The differences of the pair `x0` (t = 0), `x1` (t = 1), of shape `shape`.
   CornerDifferences(const FourPoints& x0, const FourPoints& x1, PairShape shape);
-  int count = 0;                                   ///< differences: 3 (vertex-face) or 4
-  std::array<Vec3, 4> start{}, end{};              ///< d_k at t = 0 and t = 1 (rounded)
-  std::array<double, 4> start_size{}, end_size{};  ///< Σ_c |x_c| + |y_c| of each
+  int count = 0;                       ///< differences: 3 (vertex-face) or 4
+  std::array<Vec3, 4> start{};         ///< d_k at t = 0 (rounded)
+  std::array<Vec3, 4> end{};           ///< d_k at t = 1 (rounded)
+  std::array<double, 4> start_size{};  ///< Σ_c |x_c| + |y_c| of each d_k at t = 0
+  std::array<double, 4> end_size{};    ///< the same at t = 1
 };
 
 /// Whether the pair's own normal keeps it more than `h` apart for the whole step, one way
