@@ -15,7 +15,7 @@ DetectionConfig DetectionConfig::preset(std::string_view name) {
   config.normal_cones = config.contour_test = config.adjacency_culling = false;
   config.feature_assignment = config.primitive_boxes = config.coplanarity_filter = false;
   config.projection_filter = config.radial_view = config.triangle_filter = false;
-  config.direction_filter = config.diagonal_bounds = false;
+  config.direction_filter = config.diagonal_bounds = config.thickness_filter = false;
   if (name == "basic") return config;
   config.feature_assignment = true;
   if (name == "curtis") return config;
@@ -29,6 +29,7 @@ DetectionConfig DetectionConfig::preset(std::string_view name) {
   config.triangle_filter = true;
   config.direction_filter = true;
   config.diagonal_bounds = true;
+  config.thickness_filter = true;
   if (name == "paper") return config;
   throw InputError(
       fmt::format("unknown method '{}' (expected one of: basic, curtis, tang, paper)", name));

@@ -77,7 +77,11 @@ inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
   NUMBER(double, thickness, 0.0, 0, 1e300, "thickness", defines_result,                           \
          "collisions with a thickness: report each pair that comes within this distance during "  \
          "the step, at the earliest such time (0: touching); above 0 only boxes at both ends of " \
-         "the step grown by half of it cull, the other stages are off (ccd/thickness_ccd.hpp)")   \
+         "the step grown by half of it and thickness_filter cull, the other stages are off "      \
+         "(ccd/thickness_ccd.hpp)")                                                               \
+  SWITCH(thickness_filter, true, "thickness-filter", work_only,                                   \
+         "with a thickness: drop the pairs their own normal keeps more than it apart for the "    \
+         "whole step before the CCD (candidates/thickness_pair_filter.hpp)")                      \
   NUMBER(int, threads, 0, 0, kUnbounded, "threads", work_only,                                    \
          "worker threads (0: all hardware threads)")                                              \
   SWITCH(classify_every_cluster, false, "classify-every-cluster", output_only,                    \

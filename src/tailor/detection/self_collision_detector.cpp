@@ -14,6 +14,7 @@
 #include "tailor/culling/bvh_traversal.hpp"
 #include "tailor/culling/node_contours.hpp"
 #include "tailor/culling/radial_view_culling.hpp"
+#include "tailor/candidates/thickness_pair_filter.hpp"
 #include "tailor/detection/exact_pair_tests.hpp"
 #include "tailor/detection/feature_box_pairs.hpp"
 #include "tailor/detection/stage_counts.hpp"
@@ -207,16 +208,28 @@ struct SelfCollisionDetector::Impl {
     thickness_trees.update(mesh, grown_vertex_boxes(x0, x1));
     stats.refit_ms = milliseconds_since(refit);
     const auto stage = SteadyClock::now();
-    const std::vector<FeaturePairs> parts = thickness_trees.overlapping_pair_parts(mesh);
+    std::vector<FeaturePairs> parts = thickness_trees.overlapping_pair_parts(mesh);
     stats.traversal_ms = milliseconds_since(stage);
+    // The walk's pairs count as those after the boxes; the normal filter's survivors as
+    // those after the filter (candidates/thickness_pair_filter.hpp).
+    const auto filter = SteadyClock::now();
     std::vector<std::span<const VertexFacePair>> vertex_face;
     std::vector<std::span<const EdgeEdgePair>> edge_edge;
-    for (const FeaturePairs& part : parts) {
+    for (FeaturePairs& part : parts) {
+      stats.vf_after_boxes += static_cast<std::int64_t>(part.vertex_face.size());
+      stats.ee_after_boxes += static_cast<std::int64_t>(part.edge_edge.size());
+      if (config.thickness_filter) {
+        drop_pairs_kept_apart(mesh, x0, x1, config.thickness, part);
+      }
       vertex_face.emplace_back(part.vertex_face);
       edge_edge.emplace_back(part.edge_edge);
       stats.vf_tested += static_cast<std::int64_t>(part.vertex_face.size());
       stats.ee_tested += static_cast<std::int64_t>(part.edge_edge.size());
     }
+    stats.vf_generated = stats.vf_after_boxes, stats.ee_generated = stats.ee_after_boxes;
+    stats.vf_after_filter = stats.vf_after_projection = stats.vf_tested;
+    stats.ee_after_filter = stats.ee_after_projection = stats.ee_tested;
+    stats.pair_generation_ms = milliseconds_since(filter);
     const auto ccd = SteadyClock::now();
     tester.begin_step();
     tester.test(mesh, x0, x1, vertex_face, edge_edge);
