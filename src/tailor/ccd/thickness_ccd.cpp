@@ -331,12 +331,15 @@ ThicknessResult within_at_start() {
 
 }  // namespace
 
-ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& q, double h) {
+ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& q, double h, NormalTest normal_test) {
   const StepPoints m{{q.p_t0, q.a_t0, q.b_t0, q.c_t0}, {q.p_t1, q.a_t1, q.b_t1, q.c_t1}};
   check_query(m, h, "vertex_face_ccd_within");
   if (apart_along_a_coordinate_axis(m.x0, m.x1, PairShape::vertex_face, h)) return {};
   const CornerDifferences differences(m.x0, m.x1, PairShape::vertex_face);
-  if (apart_along_normals(m.x0, m.x1, differences, PairShape::vertex_face, h)) return {};
+  if (normal_test == NormalTest::run &&
+      apart_along_normals(m.x0, m.x1, differences, PairShape::vertex_face, h)) {
+    return {};
+  }
   if (within_by_closest_points(m.x0, PairShape::vertex_face, h)) return within_at_start();
   const double speed = fastest_relative(m, {{0, 1}, {0, 2}, {0, 3}});
   const auto find_never = [&m] {
@@ -352,13 +355,16 @@ ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& q, double h) {
                          });
 }
 
-ThicknessResult edge_edge_ccd_within(const EdgeEdgeQuery& q, double h) {
+ThicknessResult edge_edge_ccd_within(const EdgeEdgeQuery& q, double h, NormalTest normal_test) {
   const StepPoints m{{q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0},
                      {q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1}};
   check_query(m, h, "edge_edge_ccd_within");
   if (apart_along_a_coordinate_axis(m.x0, m.x1, PairShape::edge_edge, h)) return {};
   const CornerDifferences differences(m.x0, m.x1, PairShape::edge_edge);
-  if (apart_along_normals(m.x0, m.x1, differences, PairShape::edge_edge, h)) return {};
+  if (normal_test == NormalTest::run &&
+      apart_along_normals(m.x0, m.x1, differences, PairShape::edge_edge, h)) {
+    return {};
+  }
   if (within_by_closest_points(m.x0, PairShape::edge_edge, h)) return within_at_start();
   const double speed = fastest_relative(m, {{0, 2}, {0, 3}, {1, 2}, {1, 3}});
   const auto find_never = [&m] {

@@ -75,12 +75,24 @@ struct ThicknessResult {
 /// Intervals one query may examine before it reports conservatively.
 inline constexpr int kMaxThicknessIntervals = 1 << 16;
 
+/// Whether a query first tries the pair's own normal (apart_along_normals(),
+/// ccd/separating_axes.hpp), or skips it because its caller has run the same test on the
+/// pair already (the detector's batched filter, candidates/thickness_pair_filter.hpp).
+/// Skipping changes the work: a pair the normal would have cleared goes through the search,
+/// whose answer meets the same guarantees.
+enum class NormalTest {
+  run,   ///< try the pair's normal first
+  skip,  ///< the caller has tried it
+};
+
 /// The earliest time vertex `p` comes within `h` (> 0) of the closed triangle `(a, b, c)`.
 /// Throws std::invalid_argument on a non-finite input or h ≤ 0.
-ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& query, double h);
+ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& query, double h,
+                                       NormalTest normal_test = NormalTest::run);
 
 /// The earliest time the closed segments come within `h` (> 0) of each other. Throws
 /// std::invalid_argument on a non-finite input or h ≤ 0.
-ThicknessResult edge_edge_ccd_within(const EdgeEdgeQuery& query, double h);
+ThicknessResult edge_edge_ccd_within(const EdgeEdgeQuery& query, double h,
+                                     NormalTest normal_test = NormalTest::run);
 
 }  // namespace tailor

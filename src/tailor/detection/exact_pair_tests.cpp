@@ -20,11 +20,11 @@ CcdResult touching_ccd(const VertexFaceQuery& q) {
 CcdResult touching_ccd(const EdgeEdgeQuery& q) {
   return edge_edge_ccd(q);
 }
-ThicknessResult within_ccd(const VertexFaceQuery& q, double h) {
-  return vertex_face_ccd_within(q, h);
+ThicknessResult within_ccd(const VertexFaceQuery& q, double h, NormalTest normal_test) {
+  return vertex_face_ccd_within(q, h, normal_test);
 }
-ThicknessResult within_ccd(const EdgeEdgeQuery& q, double h) {
-  return edge_edge_ccd_within(q, h);
+ThicknessResult within_ccd(const EdgeEdgeQuery& q, double h, NormalTest normal_test) {
+  return edge_edge_ccd_within(q, h, normal_test);
 }
 
 EdgeEdgeCollision make_edge_edge(const EdgeArray& edges, Index e1, Index e2, double toi) {
@@ -119,7 +119,7 @@ template <class Query>
 std::optional<double> ExactPairTester::time_of_impact(const Query& query,
                                                       std::int64_t& exact) const {
   if (m_thickness > 0) {
-    const ThicknessResult result = within_ccd(query, m_thickness);
+    const ThicknessResult result = within_ccd(query, m_thickness, m_normal_test);
     return result.hit ? std::optional<double>(result.toi) : std::nullopt;
   }
   const CcdResult result = touching_ccd(query);

@@ -10,6 +10,7 @@
 #include <span>
 
 #include "tailor/candidates/primitive_pair.hpp"
+#include "tailor/ccd/thickness_ccd.hpp"
 #include "tailor/detection/collision.hpp"
 #include "tailor/mesh/triangle_mesh.hpp"
 
@@ -27,7 +28,12 @@ class ExactPairTester {
   /// From now on a pair counts when it comes within `thickness` (> 0) during the step, at
   /// the earliest such time (ccd/thickness_ccd.hpp); 0, the default, is touching (the
   /// exact CCD).
-  void set_thickness(double thickness) { m_thickness = thickness; }
+  /// `normal_test`: NormalTest::skip when every pair given has been through the same test
+  /// along its own normal already (ccd/thickness_ccd.hpp).
+  void set_thickness(double thickness, NormalTest normal_test = NormalTest::run) {
+    m_thickness = thickness;
+    m_normal_test = normal_test;
+  }
   /// Tests every pair of one batch (parallel); may be called any number of times a step.
   void test(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
             std::span<const VertexFacePair> vertex_face, std::span<const EdgeEdgePair> edge_edge);
@@ -69,6 +75,7 @@ class ExactPairTester {
 
   tbb::enumerable_thread_specific<ThreadOutput> m_outputs;
   double m_thickness = 0;
+  NormalTest m_normal_test = NormalTest::run;
 };
 
 /// The candidate pairs of one batch.

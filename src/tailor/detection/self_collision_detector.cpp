@@ -81,7 +81,8 @@ struct SelfCollisionDetector::Impl {
     use_radial_view = config.radial_view && !section_loops.empty();
     arena.execute([&] {
       check_positions(mesh, x_build, "the build frame");
-      tester.set_thickness(config.thickness);
+      tester.set_thickness(config.thickness,
+                           config.thickness_filter ? NormalTest::skip : NormalTest::run);
       if (config.thickness > 0) {
         // The trees of within_thickness(), built here on the build frame as the BVH is for
         // h = 0; each step refits them.
