@@ -1,6 +1,8 @@
 #include "tailor/detection/self_collision_detector.hpp"
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 
@@ -191,11 +193,18 @@ struct SelfCollisionDetector::Impl {
   std::vector<StepBox> grown_vertex_boxes(const Positions& x0, const Positions& x1) const {
     std::vector<StepBox> boxes(static_cast<std::size_t>(mesh.num_vertices()));
     const double half = 0.5 * config.thickness;
-    for (Index v = 0; v < mesh.num_vertices(); ++v) {
-      boxes[static_cast<std::size_t>(v)] =
-          StepBox::holding(grown_outwards(swept_box(x0, x0, {v}), half),
-                           grown_outwards(swept_box(x1, x1, {v}), half));
-    }
+    const auto at = [half](const Positions& x, Index v) {
+      Aabb point;
+      point.extend(x.row(v).transpose());
+      return grown_outwards(point, half);
+    };
+    tbb::parallel_for(tbb::blocked_range<Index>(0, mesh.num_vertices(), 4096),
+                      [&](const tbb::blocked_range<Index>& range) {
+                        for (Index v = range.begin(); v != range.end(); ++v) {
+                          boxes[static_cast<std::size_t>(v)] =
+                              StepBox::holding(at(x0, v), at(x1, v));
+                        }
+                      });
     return boxes;
   }
 
