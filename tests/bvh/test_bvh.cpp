@@ -1,15 +1,16 @@
 // BasicBvh's walks against every pair: the pairs of two trees and of one tree with itself,
 // sequential and parallel, equal the pairs brute force finds, for boxes at one instant (Aabb)
-// and boxes at both ends of a step (StepBox, whose walks end in buckets compared eight boxes at
-// a time by StepBoxColumns); and StepBoxColumns gives back each box, and its mask equals
-// may_meet_over_step() lane by lane, for every count of boxes, with the lanes past the count
-// holding boxes that would meet.
+// and boxes at both ends of a step (StepBox, whose walks end in buckets compared sixteen or
+// eight boxes at a time by StepBoxColumns); and StepBoxColumns gives back each box, and its
+// mask (the SSE and the AVX-512 kernel) equals may_meet_over_step() lane by lane, for every
+// count of boxes, with the lanes past the count holding boxes that would meet.
 
 #include <gtest/gtest.h>
 
 #include <tbb/enumerable_thread_specific.h>
 
 #include <algorithm>
+#include <functional>
 #include <random>
 #include <utility>
 #include <vector>
@@ -121,16 +122,33 @@ TEST(StepBoxColumns, MaskIsMayMeetOverStepForEachLane) {
     EXPECT_TRUE(back.start.min == boxes[i].start.min && back.start.max == boxes[i].start.max &&
                 back.end.min == boxes[i].end.min && back.end.max == boxes[i].end.max);
   }
+  // The kernel this processor runs, the SSE one, and the AVX-512 one where it runs.
+  std::vector<std::function<std::uint32_t(const StepBox&, Index, int)>> kernels = {
+      [&](const StepBox& box, Index first, int count) {
+        return columns.may_meet_mask(box, first, count);
+      },
+      [&](const StepBox& box, Index first, int count) {
+        return detail::may_meet_mask_sse(columns.columns(), box, first, count);
+      }};
+  if (__builtin_cpu_supports("avx512f")) {
+    kernels.push_back([&](const StepBox& box, Index first, int count) {
+      return detail::may_meet_mask_avx512(columns.columns(), box, first, count);
+    });
+  }
   int met = 0, apart = 0;
   for (int trial = 0; trial < 400; ++trial) {
     const StepBox box = random_step_box(rng);
     for (int count = 0; count <= StepBoxColumns::kLanes; ++count) {
       const Index first = trial % (n - StepBoxColumns::kLanes);
-      const std::uint32_t mask = columns.may_meet_mask(box, first, count);
-      for (int j = 0; j < 32; ++j) {
-        const bool expected = j < count && box.overlaps(boxes[first + j]);
-        EXPECT_EQ((mask >> j) & 1u, expected ? 1u : 0u) << "lane " << j << " of " << count;
-        if (j < count) (expected ? met : apart) += 1;
+      for (std::size_t kernel = 0; kernel < kernels.size(); ++kernel) {
+        if (kernel == 0 && count > StepBoxColumns::lanes()) continue;
+        const std::uint32_t mask = kernels[kernel](box, first, count);
+        for (int j = 0; j < 32; ++j) {
+          const bool expected = j < count && box.overlaps(boxes[first + j]);
+          EXPECT_EQ((mask >> j) & 1u, expected ? 1u : 0u)
+              << "kernel " << kernel << " lane " << j << " of " << count;
+          if (j < count) (expected ? met : apart) += 1;
+        }
       }
     }
   }

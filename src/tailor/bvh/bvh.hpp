@@ -92,10 +92,11 @@ class BasicBvh {
   // Subtrees with fewer primitives than this are handled by one task.
   static constexpr Index kParallelGrain = 2048;
   // Two subtrees of at most this many primitives each are compared primitive by primitive
-  // (their boxes lie side by side in leaf order): for StepBoxes, compared eight at once,
-  // visiting the nodes between them costs more than the comparisons they spare.
+  // (their boxes lie side by side in leaf order): for StepBoxes, compared sixteen or eight at
+  // once (StepBoxColumns::lanes()), visiting the nodes between them costs more than the
+  // comparisons they spare.
   static constexpr bool kColumns = std::is_same_v<Box, StepBox>;
-  static constexpr Index kBucket = kColumns ? StepBoxColumns::kLanes : 1;
+  static Index bucket_size() { return kColumns ? StepBoxColumns::lanes() : 1; }
   struct NoColumns {};
 
   template <class Update>
@@ -153,7 +154,7 @@ template <class Visit>
 void BasicBvh<Box>::pair_recursive(Index a, const BasicBvh& other, Index b, Visit& visit) const {
   if (!m_boxes[a].overlaps(other.m_boxes[b])) return;
   const bool a_leaf = is_leaf(a), b_leaf = other.is_leaf(b);
-  if (m_count[a] <= kBucket && other.m_count[b] <= kBucket) {
+  if (m_count[a] <= bucket_size() && other.m_count[b] <= bucket_size()) {
     if constexpr (kColumns) {
       bucket_pairs(a, other, b, visit);
     } else {
@@ -171,7 +172,7 @@ void BasicBvh<Box>::pair_recursive(Index a, const BasicBvh& other, Index b, Visi
 template <class Box>
 template <class Visit>
 void BasicBvh<Box>::self_recursive(Index a, Visit& visit) const {
-  if (m_count[a] <= kBucket) {
+  if (m_count[a] <= bucket_size()) {
     if constexpr (kColumns) bucket_self_pairs(a, visit);
     return;
   }

@@ -1,14 +1,13 @@
 #pragma once
 /// @file
-/// StepBoxes in structure-of-arrays form, so that one box is compared with eight at once: the
-/// buckets at the bottom of BasicBvh<StepBox>'s walks (the candidate walk of collisions with a
-/// thickness), where one node pair used to be visited per pair of boxes.
+/// StepBoxes in structure-of-arrays form, so that one box is compared with sixteen at once
+/// (AVX-512; eight elsewhere): the buckets at the bottom of BasicBvh<StepBox>'s walks (the
+/// candidate walk of collisions with a thickness), where one node pair used to be visited per
+/// pair of boxes.
 
 #include <array>
 #include <cstdint>
 #include <vector>
-
-#include <immintrin.h>
 
 #include "tailor/bvh/step_boxes.hpp"
 #include "tailor/geometry/types.hpp"
@@ -16,11 +15,19 @@
 namespace tailor {
 
 /// The twelve bounds of a sequence of StepBoxes (start min, start max, end min, end max; x, y,
-/// z), one column each, padded by kLanes entries so that any eight consecutive boxes load.
+/// z), one column each, padded by kLanes entries so that any kLanes consecutive boxes load.
 class StepBoxColumns {
  public:
-  /// Boxes compared at once.
-  static constexpr int kLanes = 8;
+  /// Most boxes compared at once.
+  static constexpr int kLanes = 16;
+  /// The twelve columns.
+  using Columns = std::array<std::vector<float>, 12>;
+  /// The kernel of may_meet_mask().
+  using MaskKernel = std::uint32_t (*)(const Columns&, const StepBox&, Index, int);
+
+  /// Boxes this processor compares at once: 16 with AVX-512, 8 otherwise (two SSE vectors;
+  /// sixteen in four were no faster than eight in two).
+  static int lanes();
 
   /// Room for `n` boxes (their bounds unset until set()).
   void resize(Index n) {
@@ -50,30 +57,30 @@ class StepBoxColumns {
     }
     return box;
   }
-  /// Bit j (j < count ≤ kLanes) set when `box` and stored box first + j may meet over the step:
-  /// the same comparisons as may_meet_over_step(), eight boxes at a time.
+  /// Bit j (j < count ≤ lanes()) set when `box` and stored box first + j may meet over the
+  /// step: the same comparisons as may_meet_over_step(), lanes() boxes at a time.
   std::uint32_t may_meet_mask(const StepBox& box, Index first, int count) const {
-    std::uint32_t mask = 0;
-    for (int half = 0; half < kLanes; half += 4) {
-      const std::size_t at = static_cast<std::size_t>(first) + half;
-      const auto column = [&](int c) { return _mm_loadu_ps(m_columns[c].data() + at); };
-      __m128 apart = _mm_setzero_ps();
-      for (int k = 0; k < 3; ++k) {
-        apart = _mm_or_ps(
-            apart, _mm_and_ps(_mm_cmplt_ps(_mm_set1_ps(box.start.max[k]), column(kStartMin + k)),
-                              _mm_cmplt_ps(_mm_set1_ps(box.end.max[k]), column(kEndMin + k))));
-        apart = _mm_or_ps(
-            apart, _mm_and_ps(_mm_cmplt_ps(column(kStartMax + k), _mm_set1_ps(box.start.min[k])),
-                              _mm_cmplt_ps(column(kEndMax + k), _mm_set1_ps(box.end.min[k]))));
-      }
-      mask |= static_cast<std::uint32_t>(~_mm_movemask_ps(apart) & 0xf) << half;
-    }
-    return mask & ((1u << count) - 1u);
+    return s_kernel(m_columns, box, first, count);
   }
 
- private:
+  /// The columns (each padded by kLanes entries).
+  const Columns& columns() const { return m_columns; }
+
+  /// Column indices: start min, start max, end min, end max (x, y, z each).
   static constexpr int kStartMin = 0, kStartMax = 3, kEndMin = 6, kEndMax = 9;
-  std::array<std::vector<float>, 12> m_columns;
+
+ private:
+  static const MaskKernel s_kernel;
+  Columns m_columns;
 };
+
+namespace detail {
+/// may_meet_mask() in SSE (any x86-64 processor; count ≤ 16) and in AVX-512 (call only when
+/// lanes::has_avx512()); exposed so that a test can check that they agree.
+std::uint32_t may_meet_mask_sse(const StepBoxColumns::Columns& columns, const StepBox& box,
+                                Index first, int count);
+std::uint32_t may_meet_mask_avx512(const StepBoxColumns::Columns& columns, const StepBox& box,
+                                   Index first, int count);
+}  // namespace detail
 
 }  // namespace tailor
