@@ -36,7 +36,6 @@ class BasicFeatureBoxTrees {
 
  private:
   BasicBvh<Box> m_vertices, m_edges, m_faces;
-  std::vector<Box> m_edge_boxes, m_face_boxes;  // the last update's, reused
 };
 
 /// Trees over boxes at one instant (or swept boxes).
