@@ -66,8 +66,10 @@ class StepBoxColumns {
   /// The columns (each padded by kLanes entries).
   const Columns& columns() const { return m_columns; }
 
-  /// Column indices: start min, start max, end min, end max (x, y, z each).
-  static constexpr int kStartMin = 0, kStartMax = 3, kEndMin = 6, kEndMax = 9;
+  static constexpr int kStartMin = 0;  ///< first column of the start box's minima (x, y, z)
+  static constexpr int kStartMax = 3;  ///< first column of the start box's maxima
+  static constexpr int kEndMin = 6;    ///< first column of the end box's minima
+  static constexpr int kEndMax = 9;    ///< first column of the end box's maxima
 
  private:
   static const MaskKernel s_kernel;
