@@ -75,9 +75,12 @@ double reach(double length, double h) {
 
 /// A lower bound of u · d, where `size` is Σ_c |x_c| + |y_c| of d = y - x and `largest` is
 /// max|u_c|: u · d is computed within 5·2^-53 Σ|u_c| (|x_c| + |y_c|) ≤ 1e-15 max|u_c| Σ(|x_c| +
-/// |y_c|) (see the header), plus an absolute 1e-300 for underflow.
+/// |y_c|) (see the header), plus an absolute 1e-300 for underflow. -inf (nothing claimed)
+/// when a product could overflow (max|u_c| Σ(|x_c| + |y_c|) above 1e300, or not a number).
 double projection_at_least(const Vec3& u, double largest, const Vec3& d, double size) {
-  return u.dot(d) - (1e-15 * largest * size + 1e-300);
+  const double bound = largest * size;
+  if (!(bound <= 1e300)) return -std::numeric_limits<double>::infinity();
+  return u.dot(d) - (1e-15 * bound + 1e-300);
 }
 
 /// Lower bounds of u · d_k at both ends.

@@ -13,10 +13,10 @@
 #include "tailor/bvh/mesh_bvh.hpp"
 #include "tailor/candidates/isolated_set.hpp"
 #include "tailor/candidates/primitive_pair_generator.hpp"
+#include "tailor/candidates/thickness_pair_filter.hpp"
 #include "tailor/culling/bvh_traversal.hpp"
 #include "tailor/culling/node_contours.hpp"
 #include "tailor/culling/radial_view_culling.hpp"
-#include "tailor/candidates/thickness_pair_filter.hpp"
 #include "tailor/detection/exact_pair_tests.hpp"
 #include "tailor/detection/feature_box_pairs.hpp"
 #include "tailor/detection/stage_counts.hpp"
@@ -211,8 +211,9 @@ struct SelfCollisionDetector::Impl {
   // Collisions with a thickness h > 0: each vertex's boxes at both ends of the step grown
   // by h / 2, the vertex-face and edge-edge pairs that may meet (two primitives kept more
   // than h apart along one axis at both ends, in one order, stay more than h apart for the
-  // whole step: bvh/step_boxes.hpp), and the minimum-separation CCD. The other stages are
-  // off: their arguments hold for touching only (docs/thickness.md).
+  // whole step: bvh/step_boxes.hpp), the pairs their own normal keeps more than h apart
+  // dropped (candidates/thickness_pair_filter.hpp), and the minimum-separation CCD. The other
+  // stages are off: their arguments hold for touching only (docs/thickness.md).
   CollisionSet within_thickness(const Positions& x0, const Positions& x1, DetectionStats& stats) {
     const auto refit = SteadyClock::now();
     thickness_trees.update(mesh, grown_vertex_boxes(x0, x1));
