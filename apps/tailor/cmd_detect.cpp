@@ -39,10 +39,10 @@ nlohmann::json collisions_json(const CollisionSet& collisions) {
 
 void print_stats(const DetectionStats& s) {
   fmt::print(
-      "high level : {} node pairs visited, {} nodes culled by cones "
+      "high level : {} node pairs visited and {} leaf buckets, {} nodes culled by cones "
       "({} contour tests, {} failed), {} CTPs\n",
-      s.node_pairs_visited, s.nodes_culled_by_cones, s.contour_tests, s.contour_tests_failed,
-      s.candidate_triangle_pairs);
+      s.node_pairs_visited, s.leaf_buckets, s.nodes_culled_by_cones, s.contour_tests,
+      s.contour_tests_failed, s.candidate_triangle_pairs);
   fmt::print(
       "radial view: {} CTPs culled; {} clusters classified, {} certified; triangles facing {} / "
       "away {} / undetermined {}\n",

@@ -1,7 +1,7 @@
-// The candidate traversal's block lists: consume() hands over exactly the pairs blocks()
-// shows, leaves none behind, and a traversal after it (its blocks freed) finds the same
-// pairs again; remove_if() removes exactly the pairs its test culls; at one and two
-// threads.
+// The candidate traversal: without cones it finds exactly the leaf pairs whose bounds may meet
+// (brute force); its block lists: consume() hands over exactly the pairs blocks() shows,
+// leaves none behind, and a traversal after it (its blocks freed) finds the same pairs again;
+// remove_if() removes exactly the pairs its test culls; at one and two threads.
 
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
@@ -66,6 +66,53 @@ TEST(CandidateTraversal, ConsumeHandsOverEveryPairOnceAndFreesTheBlocks) {
         again.insert(again.end(), block.begin(), block.end());
       EXPECT_EQ(sorted(again), sorted(shown)) << threads << " threads";
     });
+  }
+}
+
+// Without cones the walk's candidates are the leaf pairs whose bounds may meet (and share no
+// vertex, with adjacency culling), found here pair by pair from the node records: the leaf
+// buckets (leaf bounds compared sixteen or eight at a time, in leaf order) must find each and
+// no other, with the diagonals and without them, on a folded cloth and on pleats.
+TEST(CandidateTraversal, SelfFindsEveryLeafPairThatMayMeet) {
+  for (const bool pleated : {false, true}) {
+    const ProceduralStep step =
+        pleated ? make_pleated_cloth(1'500) : make_folded_cloth_on_sphere(2'500);
+    const TriangleMesh mesh(static_cast<Index>(step.x0.rows()), step.faces);
+    MeshBvh bvh(mesh, step.x0);
+    std::vector<Index> leaves;
+    for (Index node = 0; node < bvh.num_nodes(); ++node) {
+      if (bvh.is_leaf(node)) leaves.push_back(node);
+    }
+    for (const bool diagonals : {true, false}) {
+      bvh.refit(step.x0, step.x1, false, diagonals);
+      for (const bool adjacency : {true, false}) {
+        PairList expected;
+        for (std::size_t i = 0; i < leaves.size(); ++i) {
+          for (std::size_t j = i + 1; j < leaves.size(); ++j) {
+            const Index f = bvh.leaf_face(leaves[i]), g = bvh.leaf_face(leaves[j]);
+            if (adjacency && mesh.faces_share_vertex(f, g)) continue;
+            if (bvh.may_meet(leaves[i], bvh, leaves[j])) {
+              expected.emplace_back(std::min(f, g), std::max(f, g));
+            }
+          }
+        }
+        std::sort(expected.begin(), expected.end());
+        CandidateTraversal traversal(mesh);
+        traversal.self(
+            bvh, NodeContours{}, {step.x0, step.x1},
+            {.normal_cones = false, .contour_test = false, .adjacency_culling = adjacency});
+        std::vector<TrianglePair> found;
+        for (const auto block : traversal.blocks())
+          found.insert(found.end(), block.begin(), block.end());
+        EXPECT_EQ(sorted(found), expected)
+            << (pleated ? "pleats" : "folded cloth") << ", diagonals " << diagonals
+            << ", adjacency culling " << adjacency;
+        EXPECT_GT(traversal.counts().leaf_buckets, 0);
+        // Some leaf pairs meet, most do not: the test can tell a bucket that drops or adds.
+        EXPECT_GT(expected.size(), leaves.size());
+        EXPECT_LT(expected.size(), leaves.size() * leaves.size() / 8);
+      }
+    }
   }
 }
 

@@ -18,7 +18,7 @@ BasicBvh<Box>::BasicBvh(std::span<const Box> primitive_boxes) {
   m_parent.assign(num_nodes, -1);
   m_first.assign(num_nodes, 0);
   m_boxes.resize(num_nodes);
-  if constexpr (kColumns) m_columns.resize(n);
+  if constexpr (kColumns) m_columns.resize(3, n);
   m_leaf_of_primitive.assign(n, -1);
   m_primitive_order.resize(n);
   // Parents precede children, so first offsets and parents fill in one forward pass.

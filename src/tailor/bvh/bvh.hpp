@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "tailor/bvh/aabb.hpp"
-#include "tailor/bvh/step_box_columns.hpp"
+#include "tailor/bvh/step_bound_columns.hpp"
 #include "tailor/bvh/step_boxes.hpp"
 
 namespace tailor {
@@ -93,10 +93,10 @@ class BasicBvh {
   static constexpr Index kParallelGrain = 2048;
   // Two subtrees of at most this many primitives each are compared primitive by primitive
   // (their boxes lie side by side in leaf order): for StepBoxes, compared sixteen or eight at
-  // once (StepBoxColumns::lanes()), visiting the nodes between them costs more than the
+  // once (StepBoundColumns::lanes()), visiting the nodes between them costs more than the
   // comparisons they spare.
   static constexpr bool kColumns = std::is_same_v<Box, StepBox>;
-  static Index bucket_size() { return kColumns ? StepBoxColumns::lanes() : 1; }
+  static Index bucket_size() { return kColumns ? StepBoundColumns::lanes() : 1; }
   struct NoColumns {};
 
   template <class Update>
@@ -130,7 +130,7 @@ class BasicBvh {
   std::vector<Index> m_primitive_order, m_leaf_of_primitive;
   std::vector<Box> m_boxes;
   // StepBoxes: the box of primitive_order()[i] at i, for the buckets.
-  [[no_unique_address]] std::conditional_t<kColumns, StepBoxColumns, NoColumns> m_columns;
+  [[no_unique_address]] std::conditional_t<kColumns, StepBoundColumns, NoColumns> m_columns;
 };
 
 /// A BVH over static boxes (or swept ones).
@@ -185,11 +185,13 @@ template <class Box>
 template <class Visit>
 void BasicBvh<Box>::bucket_pairs(Index a, const BasicBvh& other, Index b, Visit& visit) const {
   const Index first_a = m_first[a], first_b = other.m_first[b];
-  for (Index i = first_a; i < first_a + m_count[a]; ++i) {
-    for (std::uint32_t mask =
-             other.m_columns.may_meet_mask(m_columns.box(i), first_b, other.m_count[b]);
-         mask != 0; mask &= mask - 1) {
-      visit(m_primitive_order[i], other.m_primitive_order[first_b + std::countr_zero(mask)]);
+  std::uint32_t masks[StepBoundColumns::kLanes];
+  other.m_columns.may_meet_masks(m_columns, first_a, static_cast<int>(m_count[a]), 3, first_b,
+                                 static_cast<int>(other.m_count[b]), masks);
+  for (Index r = 0; r < m_count[a]; ++r) {
+    for (std::uint32_t mask = masks[r]; mask != 0; mask &= mask - 1) {
+      visit(m_primitive_order[first_a + r],
+            other.m_primitive_order[first_b + std::countr_zero(mask)]);
     }
   }
 }
@@ -197,11 +199,12 @@ void BasicBvh<Box>::bucket_pairs(Index a, const BasicBvh& other, Index b, Visit&
 template <class Box>
 template <class Visit>
 void BasicBvh<Box>::bucket_self_pairs(Index a, Visit& visit) const {
-  const Index first = m_first[a], end = first + m_count[a];
-  for (Index i = first; i < end; ++i) {
-    for (std::uint32_t mask = m_columns.may_meet_mask(m_columns.box(i), i + 1, end - i - 1);
-         mask != 0; mask &= mask - 1) {
-      visit(m_primitive_order[i], m_primitive_order[i + 1 + std::countr_zero(mask)]);
+  const Index first = m_first[a];
+  std::uint32_t masks[StepBoundColumns::kLanes];
+  m_columns.may_meet_masks_within(first, static_cast<int>(m_count[a]), 3, masks);
+  for (Index r = 0; r < m_count[a]; ++r) {
+    for (std::uint32_t mask = masks[r]; mask != 0; mask &= mask - 1) {
+      visit(m_primitive_order[first + r], m_primitive_order[first + std::countr_zero(mask)]);
     }
   }
 }

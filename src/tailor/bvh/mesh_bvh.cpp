@@ -101,7 +101,10 @@ void MeshBvh::assign_slots(const TriangleMesh& mesh, const Roles& roles) {
   m_masks_before_word.assign(words, 0);
   Index slots = 0;
   m_leaf_vertices.reserve(static_cast<std::size_t>(n + 1) / 2);
+  m_leaf_faces.reserve(static_cast<std::size_t>(n + 1) / 2);
   for (Index node = 0; node < n; ++node) {
+    // Pre-order: the leaves before `node` in id order are the leaves before its subtree.
+    m_nodes[node].first_leaf = static_cast<Index>(m_leaf_vertices.size());
     const std::size_t word = static_cast<std::size_t>(node) >> 6;
     if ((node & 63) == 0) m_masks_before_word[word] = slots;
     const bool merges = !roles.group_root[node] && size(node) >= kGroupFaces;
@@ -122,8 +125,10 @@ void MeshBvh::assign_slots(const TriangleMesh& mesh, const Roles& roles) {
     if (is_leaf(node)) {
       const auto v = mesh.faces().row(leaf_face(node));
       m_leaf_vertices.push_back({v[0], v[1], v[2]});
+      m_leaf_faces.push_back(leaf_face(node));
     }
   }
+  m_leaf_bounds.resize(StepBoundColumns::kMaxDirections, static_cast<Index>(m_leaf_faces.size()));
   m_masks.assign(static_cast<std::size_t>(slots), 0);
   // A merge node's children are merge nodes or group roots: both keep a mask.
   for (Merge& merge : m_merges) {
@@ -243,6 +248,8 @@ void MeshBvh::refit_groups(Index first, Index end, Index faces, const Positions&
                     offsetof(Node, diagonal_start) == 64 && offsetof(Node, diagonal_end) == 96 &&
                     sizeof(Node) == 128,
                 "write_group_boxes() writes 32 bytes from each box");
+  if (parts.boxes) write_leaf_bounds(first_leaf, faces, start, end_bounds);
+  if (parts.diagonals) write_leaf_diagonal_bounds(first_leaf, faces, diagonal_start, diagonal_end);
   int lane = 0;
   for (Index g = first; g < end; ++g) {
     const Group& group = m_groups[g];
@@ -261,6 +268,32 @@ void MeshBvh::refit_groups(Index first, Index end, Index faces, const Positions&
     }
     if (parts.directions) m_masks[group.mask_slot] = and_of_masks(masks, lane, lane + count);
     lane += count;
+  }
+}
+
+void MeshBvh::write_leaf_bounds(Index first_leaf, Index faces, const BatchBounds& start,
+                                const BatchBounds& end) {
+  const auto n = static_cast<std::size_t>(faces);
+  for (int k = 0; k < 3; ++k) {
+    std::copy_n(start.low[k], n, m_leaf_bounds.column(k, StepBoundColumns::kStartMin) + first_leaf);
+    std::copy_n(start.high[k], n,
+                m_leaf_bounds.column(k, StepBoundColumns::kStartMax) + first_leaf);
+    std::copy_n(end.low[k], n, m_leaf_bounds.column(k, StepBoundColumns::kEndMin) + first_leaf);
+    std::copy_n(end.high[k], n, m_leaf_bounds.column(k, StepBoundColumns::kEndMax) + first_leaf);
+  }
+}
+
+void MeshBvh::write_leaf_diagonal_bounds(Index first_leaf, Index faces,
+                                         const DiagonalBatchBounds& start,
+                                         const DiagonalBatchBounds& end) {
+  const auto n = static_cast<std::size_t>(faces);
+  for (int k = 0; k < kDiagonals; ++k) {
+    const int d = 3 + k;
+    std::copy_n(start.low[k], n, m_leaf_bounds.column(d, StepBoundColumns::kStartMin) + first_leaf);
+    std::copy_n(start.high[k], n,
+                m_leaf_bounds.column(d, StepBoundColumns::kStartMax) + first_leaf);
+    std::copy_n(end.low[k], n, m_leaf_bounds.column(d, StepBoundColumns::kEndMin) + first_leaf);
+    std::copy_n(end.high[k], n, m_leaf_bounds.column(d, StepBoundColumns::kEndMax) + first_leaf);
   }
 }
 

@@ -10,10 +10,12 @@
 #include <optional>
 #include <vector>
 
+#include "tailor/bvh/batch_bounds.hpp"
 #include "tailor/bvh/bvh_layout.hpp"
 #include "tailor/bvh/diagonal_bounds.hpp"
 #include "tailor/bvh/direction_mask.hpp"
 #include "tailor/bvh/float_box.hpp"
+#include "tailor/bvh/step_bound_columns.hpp"
 #include "tailor/bvh/step_boxes.hpp"
 #include "tailor/bvh/unwritten_allocator.hpp"
 #include "tailor/mesh/triangle_mesh.hpp"
@@ -31,7 +33,9 @@ namespace tailor {
 /// one 128-byte record, two cache lines (box at t = 0, right child or face, face count, box
 /// at t = 1; then the bounds along the four diagonals at t = 0 and t = 1, diagonal_bounds.hpp),
 /// 256 bytes per face, plus the corners of each face in leaf order (12 bytes) so
-/// the refit reads them in sequence.
+/// the refit reads them in sequence. The leaves' bounds are also kept in columns, in leaf
+/// order (StepBoundColumns, 112 bytes per face), so that a walk compares two small subtrees
+/// leaf by leaf, sixteen leaves at a time, in place of visiting the node pairs between them.
 ///
 /// Refit in two kinds of work. A *group* is a maximal subtree of fewer than kGroupFaces
 /// faces: its faces' corners are read once into a MovingTriangleBatch (shared by
@@ -86,6 +90,20 @@ class MeshBvh {
   const DiagonalBox& diagonal_start_box(Index node) const { return m_nodes[node].diagonal_start; }
   /// The same at x1.
   const DiagonalBox& diagonal_end_box(Index node) const { return m_nodes[node].diagonal_end; }
+  /// Leaf order: the leaves by increasing node id. The leaves under `node` are the
+  /// size(node) leaves from first_leaf(node) on.
+  Index first_leaf(Index node) const { return m_nodes[node].first_leaf; }
+  /// Mesh face id of the leaf at `leaf` in leaf order.
+  Index face_at_leaf(Index leaf) const { return m_leaf_faces[leaf]; }
+  /// Corners of the face at `leaf` in leaf order.
+  const std::array<Index, 3>& corners_at_leaf(Index leaf) const { return m_leaf_vertices[leaf]; }
+  /// The leaves' bounds in leaf order (valid after refit): along the axes, then the four
+  /// diagonals of diagonal_bounds.hpp when the refit computed them.
+  const StepBoundColumns& leaf_bounds() const { return m_leaf_bounds; }
+  /// Directions of leaf_bounds() that may_meet() tests: 3, or 7 with the diagonals.
+  int bound_directions() const {
+    return m_diagonals_current ? StepBoundColumns::kMaxDirections : 3;
+  }
   /// Whether faces of `node` and faces of `other`'s node `other_node` may meet during the
   /// refitted step: may_meet_over_step() of their boxes, then of their diagonal bounds
   /// (diagonal_bounds.hpp) when both trees were refitted with them.
@@ -149,7 +167,8 @@ class MeshBvh {
     Index right_or_face = -1;
     Index count = 0;
     FloatBox end;
-    std::uint64_t unused = 0;
+    Index first_leaf = 0;  // first_leaf()
+    Index unused = 0;
     // Bounds along the diagonals (diagonal_bounds.hpp): the record's second cache line.
     DiagonalBox diagonal_start;
     DiagonalBox diagonal_end;
@@ -180,6 +199,11 @@ class MeshBvh {
   // Refits groups [first, end), of `faces` faces in all (at most a batch), from one batch.
   void refit_groups(Index first, Index end, Index faces, const Positions& x0, const Positions& x1,
                     RefitParts parts);
+  // The leaf bounds of a batch's `faces` lanes, from leaf `first_leaf` on.
+  void write_leaf_bounds(Index first_leaf, Index faces, const BatchBounds& start,
+                         const BatchBounds& end);
+  void write_leaf_diagonal_bounds(Index first_leaf, Index faces, const DiagonalBatchBounds& start,
+                                  const DiagonalBatchBounds& end);
   void merge(const Merge& merge, RefitParts parts);
   // Sets an inner node's boxes to the unions of its children's.
   void join_children(Index node, bool diagonals);
@@ -191,6 +215,8 @@ class MeshBvh {
   std::vector<Index> m_masks_before_word;  // masks of the nodes below 64 · word
   std::vector<DirectionMask> m_masks;
   std::vector<std::array<Index, 3>> m_leaf_vertices;  // in leaf order, for a coherent refit
+  std::vector<Index> m_leaf_faces;                    // in leaf order
+  StepBoundColumns m_leaf_bounds;                     // in leaf order
   std::vector<Group> m_groups;                        // increasing root id
   std::vector<Merge> m_merges;                        // increasing node id
   std::vector<Task> m_tasks;                          // disjoint subtrees

@@ -2,6 +2,8 @@
 
 #include <tbb/parallel_invoke.h>
 
+#include <algorithm>
+#include <bit>
 #include <stdexcept>
 
 #include "tailor/culling/contour_test.hpp"
@@ -11,6 +13,15 @@ namespace {
 
 // Node pairs under this many faces in total are traversed by one task.
 constexpr Index kTaskGrain = 512;
+
+// Subtrees of at most this many faces (and, for a self-test, fewer than a group: below a
+// group no node keeps a normal cone) are compared leaf by leaf, lanes() leaves at a time
+// (StepBoundColumns). A leaf pair passes the same test as in the walk, and every node
+// above it holds its bounds (a node's bounds are the union of its children's), so the walk
+// would have reached it: the candidates are the walk's.
+Index bucket_faces() {
+  return StepBoundColumns::lanes();
+}
 
 }  // namespace
 
@@ -53,6 +64,10 @@ class CandidateTraversal::Walk {
     if (bvh.is_leaf(node)) return false;
     const ConeVerdict verdict = cone_verdict(bvh, contours, step, node, out);
     if (verdict != ConeVerdict::open) return verdict == ConeVerdict::certified;
+    if (bvh.size(node) < MeshBvh::kGroupFaces) {
+      bucket_self(bvh, node, out);
+      return false;
+    }
     const Index left = bvh.left(node), right = bvh.right(node);
     if (bvh.size(node) > kTaskGrain) {
       tbb::parallel_invoke([&] { self(bvh, contours, step, left, m_outputs.local()); },
@@ -102,6 +117,9 @@ class CandidateTraversal::Walk {
   void overlapping_pair(const MeshBvh& a, Index node_a, const MeshBvh& b, Index node_b,
                         ThreadOutput& out) {
     if (a.is_leaf(node_a) && b.is_leaf(node_b)) return leaf_pair(a, node_a, b, node_b, out);
+    if (a.size(node_a) <= bucket_faces() && b.size(node_b) <= bucket_faces()) {
+      return bucket_pair(a, node_a, b, node_b, out);
+    }
     const ChildPairs c = child_pairs(a, node_a, b, node_b);
     out.counts.node_pairs_visited += 2;
     const bool overlap1 = a.may_meet(c.first_a, b, c.first_b);
@@ -125,6 +143,9 @@ class CandidateTraversal::Walk {
   void small_pair(const MeshBvh& a, Index node_a, const MeshBvh& b, Index node_b,
                   ThreadOutput& out) {
     if (a.is_leaf(node_a) && b.is_leaf(node_b)) return leaf_pair(a, node_a, b, node_b, out);
+    if (a.size(node_a) <= bucket_faces() && b.size(node_b) <= bucket_faces()) {
+      return bucket_pair(a, node_a, b, node_b, out);
+    }
     const ChildPairs c = child_pairs(a, node_a, b, node_b);
     out.counts.node_pairs_visited += 2;
     if (a.may_meet(c.first_a, b, c.first_b)) small_pair(a, c.first_a, b, c.first_b, out);
@@ -133,7 +154,53 @@ class CandidateTraversal::Walk {
     }
   }
 
+  // The leaves of a node pair that may meet, compared leaf by leaf (bucket_faces()).
+  void bucket_pair(const MeshBvh& a, Index node_a, const MeshBvh& b, Index node_b,
+                   ThreadOutput& out) {
+    ++out.counts.leaf_buckets;
+    const Index first_a = a.first_leaf(node_a), first_b = b.first_leaf(node_b);
+    const int count_a = static_cast<int>(a.size(node_a));
+    std::uint32_t masks[StepBoundColumns::kLanes];
+    b.leaf_bounds().may_meet_masks(a.leaf_bounds(), first_a, count_a,
+                                   std::min(a.bound_directions(), b.bound_directions()), first_b,
+                                   static_cast<int>(b.size(node_b)), masks);
+    for (int r = 0; r < count_a; ++r) {
+      for (std::uint32_t mask = masks[r]; mask != 0; mask &= mask - 1) {
+        bucket_leaf_pair(a, first_a + r, b, first_b + std::countr_zero(mask), out);
+      }
+    }
+  }
+  // The leaf pairs inside a node, compared leaf by leaf.
+  void bucket_self(const MeshBvh& bvh, Index node, ThreadOutput& out) {
+    ++out.counts.leaf_buckets;
+    const Index first = bvh.first_leaf(node);
+    const int count = static_cast<int>(bvh.size(node));
+    std::uint32_t masks[MeshBvh::kGroupFaces];
+    bvh.leaf_bounds().may_meet_masks_within(first, count, bvh.bound_directions(), masks);
+    for (int r = 0; r < count; ++r) {
+      for (std::uint32_t mask = masks[r]; mask != 0; mask &= mask - 1) {
+        bucket_leaf_pair(bvh, first + r, bvh, first + std::countr_zero(mask), out);
+      }
+    }
+  }
+  // leaf_pair() for leaves given in leaf order.
+  void bucket_leaf_pair(const MeshBvh& a, Index leaf_a, const MeshBvh& b, Index leaf_b,
+                        ThreadOutput& out) {
+    if (m_options.adjacency_culling &&
+        corners_share_vertex(a.corners_at_leaf(leaf_a), b.corners_at_leaf(leaf_b))) {
+      return;
+    }
+    Index f = a.face_at_leaf(leaf_a), g = b.face_at_leaf(leaf_b);
+    if (f > g) std::swap(f, g);
+    out.push({f, g});
+  }
+
  private:
+  static bool corners_share_vertex(const std::array<Index, 3>& a, const std::array<Index, 3>& b) {
+    bool shared = false;
+    for (int k = 0; k < 3; ++k) shared |= (b[k] == a[0]) | (b[k] == a[1]) | (b[k] == a[2]);
+    return shared;
+  }
   // Faces f and g share a vertex (TriangleMesh::faces_share_vertex, inlined: it runs for
   // every leaf pair that may meet).
   bool share_vertex(Index f, Index g) const {
@@ -154,6 +221,7 @@ class CandidateTraversal::Walk {
 
 TraversalCounts& TraversalCounts::operator+=(const TraversalCounts& other) {
   node_pairs_visited += other.node_pairs_visited;
+  leaf_buckets += other.leaf_buckets;
   nodes_culled_by_cones += other.nodes_culled_by_cones;
   contour_tests += other.contour_tests;
   contour_tests_failed += other.contour_tests_failed;

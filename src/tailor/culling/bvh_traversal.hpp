@@ -30,11 +30,14 @@ struct TraversalOptions {
 
 /// Counts of one traversal.
 struct TraversalCounts {
-  std::int64_t node_pairs_visited = 0;    ///< node pairs whose boxes were compared
+  std::int64_t node_pairs_visited = 0;  ///< node pairs whose boxes were compared
+  /// Small subtrees (or pairs of them) compared leaf by leaf, lanes at a time; their leaf
+  /// pairs are not counted as node pairs.
+  std::int64_t leaf_buckets = 0;
   /// Nodes whose self-test a normal cone skipped (certified by the contour test when on).
   std::int64_t nodes_culled_by_cones = 0;
-  std::int64_t contour_tests = 0;          ///< contour tests run (one per cone that held)
-  std::int64_t contour_tests_failed = 0;   ///< contour tests that could not certify
+  std::int64_t contour_tests = 0;         ///< contour tests run (one per cone that held)
+  std::int64_t contour_tests_failed = 0;  ///< contour tests that could not certify
   /// Adds `other` field by field (summing the per-thread counts).
   TraversalCounts& operator+=(const TraversalCounts& other);
 };

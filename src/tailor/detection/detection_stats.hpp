@@ -26,6 +26,8 @@ namespace tailor {
         "1 when the step refitted the BVH's boxes (a step whose root is certified needs none); "  \
         "summed, the steps that did")                                                             \
   COUNT(node_pairs_visited, "traversal", "BVH node pairs whose boxes were tested")               \
+  COUNT(leaf_buckets, "traversal",                                                                \
+        "small subtrees or pairs of them compared leaf by leaf, 16 or 8 leaves at a time")        \
   COUNT(nodes_culled_by_cones, "traversal", "nodes whose self-test the normal cone skipped")     \
   COUNT(contour_tests, "traversal", "contour tests run (the node's mask was not empty)")         \
   COUNT(contour_tests_failed, "traversal", "contour tests that could not certify")               \

@@ -5,6 +5,7 @@ namespace tailor {
 void record_counts(DetectionStats& stats, const TraversalCounts& counts,
                    std::int64_t candidate_triangle_pairs) {
   stats.node_pairs_visited = counts.node_pairs_visited;
+  stats.leaf_buckets = counts.leaf_buckets;
   stats.nodes_culled_by_cones = counts.nodes_culled_by_cones;
   stats.contour_tests = counts.contour_tests;
   stats.contour_tests_failed = counts.contour_tests_failed;
