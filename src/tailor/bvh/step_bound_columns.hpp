@@ -6,6 +6,7 @@
 /// (the candidate walk of collisions with a thickness) keeps the three axes; MeshBvh keeps
 /// the axes and the four diagonals of diagonal_bounds.hpp for its leaves.
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -13,6 +14,7 @@
 
 #include "tailor/bvh/diagonal_bounds.hpp"
 #include "tailor/bvh/step_boxes.hpp"
+#include "tailor/bvh/unwritten_allocator.hpp"
 #include "tailor/geometry/types.hpp"
 
 namespace tailor {
@@ -38,11 +40,16 @@ class StepBoundColumns {
   /// sixteen in four were no faster than eight in two).
   static int lanes();
 
-  /// Room for `n` sets along the first `directions` directions (bounds zero until set).
+  /// Room for `n` sets along the first `directions` directions. Their bounds are left
+  /// unwritten (the owners write every set's before a mask reads it, in parallel, so no page
+  /// is zeroed on one thread first); the padding is zero.
   void resize(int directions, Index n) {
     m_directions = directions;
     m_stride = static_cast<std::size_t>(n) + kLanes;
-    m_data.assign(4 * static_cast<std::size_t>(directions) * m_stride, 0.0f);
+    m_data.resize(4 * static_cast<std::size_t>(directions) * m_stride);
+    for (int c = 0; c < 4 * directions; ++c) {
+      std::fill_n(m_data.data() + c * m_stride + n, kLanes, 0.0f);
+    }
   }
   /// Directions stored.
   int directions() const { return m_directions; }
@@ -106,7 +113,7 @@ class StepBoundColumns {
   static const MaskKernel s_kernel;
   int m_directions = 0;
   std::size_t m_stride = 0;
-  std::vector<float> m_data;
+  std::vector<float, UnwrittenAllocator<float>> m_data;
 };
 
 namespace detail {
