@@ -1,6 +1,8 @@
 // The isolated set equals its definition, enumerated by brute force over every feature
 // pair, on meshes with few and many orphans (regular grids, thin tubes, poles of high
-// valence, non-manifold edges, bow-ties, fins, a lone triangle).
+// valence, non-manifold edges, bow-ties, fins, a doubled face, a two-sided flap, an
+// octahedron, a lone triangle): the enumeration and the quick test that skips most edges of
+// a regular mesh (dropping any one of its conditions fails this test).
 
 #include "tailor/candidates/isolated_set.hpp"
 
@@ -68,6 +70,32 @@ TEST(IsolatedSet, EqualsItsDefinitionByBruteForce) {
     m.emplace_back("non-manifold",
                    mesh_of(10, {{0, 1, 2}, {0, 1, 3}, {0, 1, 4}, {0, 5, 6}, {7, 8, 2}, {2, 3, 4}}));
     m.emplace_back("lone triangle", mesh_of(3, {{0, 1, 2}}));
+    // A grid with one face repeated (its edges have three faces, two of them the same).
+    MeshData doubled = make_grid(5, 4, 1.0, 1.0);
+    doubled.faces.conservativeResize(doubled.faces.rows() + 1, 3);
+    doubled.faces.row(doubled.faces.rows() - 1) = doubled.faces.row(7);
+    m.emplace_back("grid with a doubled face", mesh_of(doubled));
+    // A two-sided flap (a triangle and its reverse) on an inner vertex of a grid: across
+    // from that vertex an edge whose two faces both hold it.
+    MeshData flap = make_grid(5, 5, 1.0, 1.0);
+    const Index inner = 14, p = static_cast<Index>(flap.vertices.rows());  // (2, 2) of 6 × 6
+    flap.vertices.conservativeResize(p + 2, 3);
+    flap.vertices.row(p) << 0.5, 0.5, 1.0;
+    flap.vertices.row(p + 1) << 0.6, 0.4, 1.0;
+    flap.faces.conservativeResize(flap.faces.rows() + 2, 3);
+    flap.faces.row(flap.faces.rows() - 2) << inner, p, p + 1;
+    flap.faces.row(flap.faces.rows() - 1) << inner, p + 1, p;
+    m.emplace_back("grid with a two-sided flap", mesh_of(flap));
+    // Two fans glued along a path of three vertices on both sides (a pillow of valence-4
+    // vertices): common neighbours beyond the apexes of an edge.
+    m.emplace_back("octahedron", mesh_of(6, {{0, 2, 4},
+                                             {2, 1, 4},
+                                             {1, 3, 4},
+                                             {3, 0, 4},
+                                             {2, 0, 5},
+                                             {1, 2, 5},
+                                             {3, 1, 5},
+                                             {0, 3, 5}}));
     // Fins: a third face on inner edges of a grid (the faces across an edge that do not
     // touch another edge's faces keep the two from being orphans).
     MeshData fins = make_grid(5, 5, 1.0, 1.0);

@@ -77,6 +77,91 @@ class Links {
   std::vector<LinkEntry> m_entries;
 };
 
+// Each vertex's neighbours (the other ends of its edges), 8 bytes per edge: small enough to
+// stay in cache where the link entries (32 bytes per face corner) do not.
+class Neighbours {
+ public:
+  explicit Neighbours(const TriangleMesh& mesh) : m_offsets(mesh.num_vertices() + 1, 0) {
+    const EdgeArray& edges = mesh.edges();
+    for (Index e = 0; e < mesh.num_edges(); ++e) {
+      ++m_offsets[edges(e, 0) + 1];
+      ++m_offsets[edges(e, 1) + 1];
+    }
+    for (Index v = 0; v < mesh.num_vertices(); ++v) m_offsets[v + 1] += m_offsets[v];
+    m_ids.resize(static_cast<std::size_t>(m_offsets.back()));
+    std::vector<Index> next(m_offsets.begin(), m_offsets.end() - 1);
+    for (Index e = 0; e < mesh.num_edges(); ++e) {
+      m_ids[next[edges(e, 0)]++] = edges(e, 1);
+      m_ids[next[edges(e, 1)]++] = edges(e, 0);
+    }
+  }
+  std::span<const Index> of(Index v) const {
+    return {m_ids.data() + m_offsets[v], static_cast<std::size_t>(m_offsets[v + 1] - m_offsets[v])};
+  }
+  bool adjacent(Index u, Index v) const {
+    bool found = false;
+    for (Index w : of(u)) found |= w == v;
+    return found;
+  }
+
+ private:
+  std::vector<Index> m_offsets, m_ids;
+};
+
+// Vertices whose every face's opposite edge has exactly one other face, which does not hold
+// the vertex (no boundary, non-manifold or doubled face across from it).
+std::vector<char> plain_vertices(const TriangleMesh& mesh, const Links& links) {
+  std::vector<char> plain(static_cast<std::size_t>(mesh.num_vertices()));
+  tbb::parallel_for(Index{0}, mesh.num_vertices(), [&](Index v) {
+    bool all = true;
+    for (const LinkEntry& l : links.of(v)) all &= l.far_faces == 1 && !has_vertex(l.far, v);
+    plain[v] = all;
+  });
+  return plain;
+}
+
+// Whether edge e1 = (a, b) certainly has no orphan partner, from data that stays in cache.
+// Why it holds: let e1's faces be (a, b, c1) and (a, b, c2) and e2 = (p, q) avoid a and b.
+// A face G of e2 that holds neither a nor b shares a vertex with both faces of e1 only if it
+// holds c1 and c2, which are then adjacent. Otherwise every face of e2 holds a or b. If e2
+// has one face, or several holding the same one of them, that vertex is not plain (e2 is a
+// boundary or non-manifold edge across from it, or its faces repeat). So e2's faces are (p, q,
+// a) and (p, q, b): p and q are common neighbours of a and b; one of them is neither c1 nor
+// c2 (both would make c1 and c2 adjacent). Hence no partner exists when e1 has two faces with
+// distinct apexes that are not adjacent, a and b are plain, and a and b have no common
+// neighbour but c1 and c2.
+bool certainly_no_edge_orphans(const TriangleMesh& mesh, const Links& links,
+                               const Neighbours& neighbours, const std::vector<char>& plain,
+                               Index e1) {
+  const Index a = mesh.edges()(e1, 0), b = mesh.edges()(e1, 1);
+  if (!plain[a] || !plain[b]) return false;
+  // e1's faces and their apexes from b's link (in cache: edges come sorted by b).
+  Index apexes[2];
+  int faces = 0;
+  for (const LinkEntry& l : links.of(b)) {
+    const bool holds_a = l.other[0] == a || l.other[1] == a;
+    if (holds_a && faces < 2) apexes[faces] = l.other[0] == a ? l.other[1] : l.other[0];
+    faces += holds_a;
+  }
+  if (faces != 2) return false;
+  const Index c1 = apexes[0], c2 = apexes[1];
+  if (c1 == c2 || neighbours.adjacent(c1, c2)) return false;
+  // b's neighbours but c1 and c2 in a fixed row, compared with each of a's at once.
+  constexpr int kRow = 16;
+  const std::span<const Index> around_b = neighbours.of(b);
+  if (around_b.size() > kRow) return false;
+  Index row[kRow];
+  for (int j = 0; j < kRow; ++j) {
+    const Index y = j < static_cast<int>(around_b.size()) ? around_b[j] : -1;
+    row[j] = y == c1 || y == c2 ? -1 : y;
+  }
+  bool other_common = false;
+  for (Index x : neighbours.of(a)) {
+    for (int j = 0; j < kRow; ++j) other_common |= x == row[j];
+  }
+  return !other_common;
+}
+
 // Per-thread work space, reused from one vertex or edge to the next.
 struct Scratch {
   std::vector<Index> candidates;
@@ -212,9 +297,13 @@ IsolatedSet IsolatedSet::build(const TriangleMesh& mesh) {
       mesh.num_vertices(), [&](Index v, std::vector<VertexFacePair>& out, Scratch& scratch) {
         add_vertex_orphans(links, v, out, scratch);
       });
+  const Neighbours neighbours(mesh);
+  const std::vector<char> plain = plain_vertices(mesh, links);
   set.edge_edge = collect_in_order<EdgeEdgePair>(
       mesh.num_edges(), [&](Index e1, std::vector<EdgeEdgePair>& out, Scratch& scratch) {
-        add_edge_orphans(mesh, links, e1, out, scratch);
+        if (!certainly_no_edge_orphans(mesh, links, neighbours, plain, e1)) {
+          add_edge_orphans(mesh, links, e1, out, scratch);
+        }
       });
   return set;
 }

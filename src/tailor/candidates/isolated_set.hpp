@@ -27,7 +27,10 @@ struct IsolatedSet {
   /// The isolated edge-edge pairs.
   std::vector<EdgeEdgePair> edge_edge;
 
-  /// Enumerates the set from topology alone (parallel, deterministic order).
+  /// Enumerates the set from topology alone (parallel, deterministic order). An edge whose
+  /// ends are plain, whose apexes are not adjacent and whose ends share no other neighbour
+  /// has no partner (the argument is in isolated_set.cpp): most edges of a regular mesh are
+  /// settled by that test from per-vertex neighbour lists, without their link entries.
   static IsolatedSet build(const TriangleMesh& mesh);
 };
 
