@@ -180,7 +180,7 @@ std::vector<MaskKernel> mask_kernels() {
       [](const StepBoundColumns& rows, Index first_row, int row_count,
          const StepBoundColumns& columns, int directions, Index first, int count,
          std::uint32_t* masks) {
-        columns.may_meet_masks(rows, first_row, row_count, directions, first, count, masks);
+        columns.may_meet_masks(rows, {first_row, row_count}, {first, count}, directions, masks);
       },
       [](const StepBoundColumns& rows, Index first_row, int row_count,
          const StepBoundColumns& columns, int directions, Index first, int count,
@@ -258,7 +258,7 @@ TEST(StepBoundColumns, MasksAreMayMeetOverStepForEachLane) {
     }
     // Within one range: only the sets after each row, and each pair that may meet.
     std::uint32_t masks[StepBoundColumns::kLanes];
-    columns.may_meet_masks_within(5, StepBoundColumns::lanes(), stored, masks);
+    columns.may_meet_masks_within({5, StepBoundColumns::lanes()}, stored, masks);
     for (int r = 0; r < StepBoundColumns::lanes(); ++r) {
       for (int j = 0; j < 32; ++j) {
         const bool expected =
@@ -275,9 +275,9 @@ TEST(StepBoundColumns, MasksAreMayMeetOverStepForEachLane) {
     everywhere.diagonal_start.max.fill(1e30f);
     everywhere.diagonal_end.max.fill(1e30f);
     const StepBoundColumns wide = stored_columns({everywhere}, stored);
-    columns.may_meet_masks(wide, 0, 1, stored, 0, 3, masks);
+    columns.may_meet_masks(wide, {0, 1}, {0, 3}, stored, masks);
     EXPECT_EQ(masks[0], 0b111u);
-    columns.may_meet_masks(wide, 0, 1, stored, n - 1, 1, masks);
+    columns.may_meet_masks(wide, {0, 1}, {n - 1, 1}, stored, masks);
     EXPECT_EQ(masks[0], 0b1u);
   }
 }

@@ -186,8 +186,8 @@ template <class Visit>
 void BasicBvh<Box>::bucket_pairs(Index a, const BasicBvh& other, Index b, Visit& visit) const {
   const Index first_a = m_first[a], first_b = other.m_first[b];
   std::uint32_t masks[StepBoundColumns::kLanes];
-  other.m_columns.may_meet_masks(m_columns, first_a, static_cast<int>(m_count[a]), 3, first_b,
-                                 static_cast<int>(other.m_count[b]), masks);
+  other.m_columns.may_meet_masks(m_columns, {first_a, static_cast<int>(m_count[a])},
+                                 {first_b, static_cast<int>(other.m_count[b])}, 3, masks);
   for (Index r = 0; r < m_count[a]; ++r) {
     for (std::uint32_t mask = masks[r]; mask != 0; mask &= mask - 1) {
       visit(m_primitive_order[first_a + r],
@@ -201,7 +201,7 @@ template <class Visit>
 void BasicBvh<Box>::bucket_self_pairs(Index a, Visit& visit) const {
   const Index first = m_first[a];
   std::uint32_t masks[StepBoundColumns::kLanes];
-  m_columns.may_meet_masks_within(first, static_cast<int>(m_count[a]), 3, masks);
+  m_columns.may_meet_masks_within({first, static_cast<int>(m_count[a])}, 3, masks);
   for (Index r = 0; r < m_count[a]; ++r) {
     for (std::uint32_t mask = masks[r]; mask != 0; mask &= mask - 1) {
       visit(m_primitive_order[first + r], m_primitive_order[first + std::countr_zero(mask)]);

@@ -79,21 +79,26 @@ class StepBoundColumns {
     return box;
   }
 
-  /// For each of the `row_count` sets from `first_row` of `rows` (≤ 32), masks[r]: bit j (j <
-  /// count ≤ lanes()) set when row set first_row + r and this object's set first + j may meet
+  /// A range of stored sets: `count` sets from `first`.
+  struct Sets {
+    Index first;  ///< the first set
+    int count;    ///< how many
+  };
+  /// For each set row_sets.first + r in `rows` (at most 32), masks[r]: bit j (j <
+  /// sets.count ≤ lanes()) set when that set and this object's set sets.first + j may meet
   /// over the step: along none of the first `directions` directions (≤ both objects'
   /// directions()) are they apart at both ends in one order (may_meet_over_step() per
   /// direction), lanes() sets at a time.
-  void may_meet_masks(const StepBoundColumns& rows, Index first_row, int row_count, int directions,
-                      Index first, int count, std::uint32_t* masks) const {
-    s_kernel({rows.m_data.data() + first_row, rows.m_stride}, {m_data.data() + first, m_stride},
-             row_count, directions, count, masks);
+  void may_meet_masks(const StepBoundColumns& rows, Sets row_sets, Sets sets, int directions,
+                      std::uint32_t* masks) const {
+    s_kernel({rows.m_data.data() + row_sets.first, rows.m_stride},
+             {m_data.data() + sets.first, m_stride}, row_sets.count, directions, sets.count, masks);
   }
   /// The masks of the set pairs inside a range of sets: masks[r] for set first + r against
   /// the sets after it (bit j for first + j, only j > r set).
-  void may_meet_masks_within(Index first, int count, int directions, std::uint32_t* masks) const {
-    may_meet_masks(*this, first, count, directions, first, count, masks);
-    for (int r = 0; r < count; ++r) masks[r] &= ~((2u << r) - 1u);
+  void may_meet_masks_within(Sets sets, int directions, std::uint32_t* masks) const {
+    may_meet_masks(*this, sets, sets, directions, masks);
+    for (int r = 0; r < sets.count; ++r) masks[r] &= ~((2u << r) - 1u);
   }
 
   /// Where a kernel reads: set 0's first column, and the distance between columns.

@@ -161,9 +161,9 @@ class CandidateTraversal::Walk {
     const Index first_a = a.first_leaf(node_a), first_b = b.first_leaf(node_b);
     const int count_a = static_cast<int>(a.size(node_a));
     std::uint32_t masks[StepBoundColumns::kLanes];
-    b.leaf_bounds().may_meet_masks(a.leaf_bounds(), first_a, count_a,
-                                   std::min(a.bound_directions(), b.bound_directions()), first_b,
-                                   static_cast<int>(b.size(node_b)), masks);
+    b.leaf_bounds().may_meet_masks(a.leaf_bounds(), {first_a, count_a},
+                                   {first_b, static_cast<int>(b.size(node_b))},
+                                   std::min(a.bound_directions(), b.bound_directions()), masks);
     for (int r = 0; r < count_a; ++r) {
       for (std::uint32_t mask = masks[r]; mask != 0; mask &= mask - 1) {
         bucket_leaf_pair(a, first_a + r, b, first_b + std::countr_zero(mask), out);
@@ -176,7 +176,7 @@ class CandidateTraversal::Walk {
     const Index first = bvh.first_leaf(node);
     const int count = static_cast<int>(bvh.size(node));
     std::uint32_t masks[MeshBvh::kGroupFaces];
-    bvh.leaf_bounds().may_meet_masks_within(first, count, bvh.bound_directions(), masks);
+    bvh.leaf_bounds().may_meet_masks_within({first, count}, bvh.bound_directions(), masks);
     for (int r = 0; r < count; ++r) {
       for (std::uint32_t mask = masks[r]; mask != 0; mask &= mask - 1) {
         bucket_leaf_pair(bvh, first + r, bvh, first + std::countr_zero(mask), out);
