@@ -146,18 +146,9 @@ bool certainly_no_edge_orphans(const TriangleMesh& mesh, const Links& links,
   if (faces != 2) return false;
   const Index c1 = apexes[0], c2 = apexes[1];
   if (c1 == c2 || neighbours.adjacent(c1, c2)) return false;
-  // b's neighbours but c1 and c2 in a fixed row, compared with each of a's at once.
-  constexpr int kRow = 16;
-  const std::span<const Index> around_b = neighbours.of(b);
-  if (around_b.size() > kRow) return false;
-  Index row[kRow];
-  for (int j = 0; j < kRow; ++j) {
-    const Index y = j < static_cast<int>(around_b.size()) ? around_b[j] : -1;
-    row[j] = y == c1 || y == c2 ? -1 : y;
-  }
   bool other_common = false;
   for (Index x : neighbours.of(a)) {
-    for (int j = 0; j < kRow; ++j) other_common |= x == row[j];
+    if (x != c1 && x != c2) other_common |= neighbours.adjacent(b, x);
   }
   return !other_common;
 }
