@@ -200,7 +200,18 @@ TEST(ThicknessPairFilter, KeepsPairsExactlyHApartAndDropsFartherOnes) {
   FeaturePairs kept = level.pairs;
   drop_pairs_kept_apart(level.mesh, level.x, level.x, h, kept);
   EXPECT_EQ(kept.vertex_face.size(), 1u);
-  EXPECT_EQ(kept.edge_edge.size(), level.pairs.edge_edge.size());
+  // The edge pairs exactly h apart (those that cross in projection) stay; the others are
+  // farther and may go.
+  int exactly_h = 0;
+  for (const EdgeEdgePair& pair : level.pairs.edge_edge) {
+    if (sampled_distance(level.mesh, level.x, level.x, pair, 0.0) > h * (1 + 1e-9)) continue;
+    ++exactly_h;
+    EXPECT_TRUE(std::any_of(
+        kept.edge_edge.begin(), kept.edge_edge.end(),
+        [&](const auto& k) { return k.edge_a == pair.edge_a && k.edge_b == pair.edge_b; }))
+        << "edges " << pair.edge_a << " and " << pair.edge_b << " are h apart but were dropped";
+  }
+  EXPECT_GT(exactly_h, 0);
   OnePairEach farther = exactly_apart(1.01 * h);
   kept = farther.pairs;
   drop_pairs_kept_apart(farther.mesh, farther.x, farther.x, h, kept);

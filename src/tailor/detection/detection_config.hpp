@@ -80,8 +80,9 @@ inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
          "the step grown by half of it and thickness_filter cull, the other stages are off "      \
          "(ccd/thickness_ccd.hpp)")                                                               \
   SWITCH(thickness_filter, true, "thickness-filter", work_only,                                   \
-         "with a thickness: drop the pairs their own normal keeps more than it apart for the "    \
-         "whole step before the CCD (candidates/thickness_pair_filter.hpp)")                      \
+         "with a thickness: drop the pairs their own normal, or the direction between them, "    \
+         "keeps more than it apart for the whole step before the CCD "                            \
+         "(candidates/thickness_pair_filter.hpp)")                                                \
   NUMBER(int, threads, 0, 0, kUnbounded, "threads", work_only,                                    \
          "worker threads (0: all hardware threads)")                                              \
   SWITCH(classify_every_cluster, false, "classify-every-cluster", output_only,                    \
