@@ -197,8 +197,9 @@ class CandidateTraversal::Walk {
 
  private:
   static bool corners_share_vertex(const std::array<Index, 3>& a, const std::array<Index, 3>& b) {
+    const Index a0 = a[0], a1 = a[1], a2 = a[2];
     bool shared = false;
-    for (int k = 0; k < 3; ++k) shared |= (b[k] == a[0]) | (b[k] == a[1]) | (b[k] == a[2]);
+    for (const Index v : b) shared |= (v == a0) | (v == a1) | (v == a2);
     return shared;
   }
   // Faces f and g share a vertex (TriangleMesh::faces_share_vertex, inlined: it runs for
