@@ -353,6 +353,34 @@ TEST(ThicknessCcd, WitnessClaimsOnlyPairsWithinH) {
   EXPECT_GT(claimed, tried * 99 / 100);
 }
 
+TEST(ThicknessCcd, AdvanceFromStartWeightsIsTheAdvanceFromZero) {
+  // The search's first advancement reuses the closest weights the witness at t = 0 formed:
+  // it must clear exactly what the advancement from t = 0 clears, and the witness must say
+  // what it says without them, for random pairs near each other (most advance part way).
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<double> coordinate(-1, 1), motion(-0.3, 0.3);
+  int advanced = 0;
+  for (int i = 0; i < 2000; ++i) {
+    FourPoints x0, x1;
+    for (int k = 0; k < 4; ++k) {
+      x0[k] = Vec3(coordinate(rng), coordinate(rng), coordinate(rng));
+      x1[k] = x0[k] + Vec3(motion(rng), motion(rng), motion(rng));
+    }
+    for (const PairShape shape : {PairShape::vertex_face, PairShape::edge_edge}) {
+      const double h = 0.05;
+      const ClosestWeights weights = closest_weights(x0, shape);
+      const ClosestDirectionAdvance advance(x0, x1, shape, h);
+      const double from_zero = advance.clear_from(0);
+      EXPECT_EQ(advance.clear_from_start(weights), from_zero) << i;
+      EXPECT_EQ(within_by_closest_points(x0, shape, h, weights),
+                within_by_closest_points(x0, shape, h))
+          << i;
+      advanced += from_zero > 0 && from_zero < 1;
+    }
+  }
+  EXPECT_GT(advanced, 100);
+}
+
 TEST(ThicknessCcd, NearlyParallelEdgesAgreeWithTheSampledOracle) {
   // Two edges at a small angle (1e-7 to 1e-2) a random gap apart, carried by one large
   // motion and turning a little relative to each other: nearly parallel closest points

@@ -41,14 +41,10 @@ Vec3 difference_at(const FourPoints& x, PairShape shape, double first, double se
   return (x[2] + second * (x[3] - x[2])) - (x[0] + first * (x[1] - x[0]));
 }
 
-/// From the first primitive's closest point to the second's at t.
-Vec3 closest_direction(const FourPoints& x, PairShape shape) {
-  if (shape == PairShape::vertex_face) {
-    const Vec3 w = closest_point_barycentric(x[0], x[1], x[2], x[3]);
-    return difference_at(x, shape, w[1], w[2]);
-  }
-  const auto [s, u] = closest_segment_parameters(x[0], x[1], x[2], x[3]);
-  return difference_at(x, shape, s, u);
+/// From the first primitive's closest point to the second's in `x`, whose closest points
+/// have the weights `w`.
+Vec3 closest_direction(const FourPoints& x, PairShape shape, const ClosestWeights& w) {
+  return difference_at(x, shape, w.first, w.second);
 }
 
 /// Lower bounds of u · d_k at t = 0 (`start`) and t = 1 (`end`), one per difference.
@@ -110,16 +106,15 @@ bool beyond_on_step(const Vec3& u, double reach, const CornerDifferences& d) {
 
 /// The second primitive's point minus the first's, at weights for which the exact points
 /// lie on the primitives (see the header); nullopt when the weights cannot be made so.
-std::optional<Vec3> witness_difference(const FourPoints& x, PairShape shape) {
+std::optional<Vec3> witness_difference(const FourPoints& x, PairShape shape,
+                                       const ClosestWeights& w) {
   if (shape == PairShape::vertex_face) {
-    const Vec3 w = closest_point_barycentric(x[0], x[1], x[2], x[3]);
     constexpr double kShrink = 1 - 0x1p-50;
-    const double wb = std::max(0.0, w[1]) * kShrink, wc = std::max(0.0, w[2]) * kShrink;
+    const double wb = std::max(0.0, w.first) * kShrink, wc = std::max(0.0, w.second) * kShrink;
     if (!(wb + wc <= 1 - 0x1p-51)) return std::nullopt;
     return difference_at(x, shape, wb, wc);
   }
-  const auto [s, u] = closest_segment_parameters(x[0], x[1], x[2], x[3]);
-  return difference_at(x, shape, std::clamp(s, 0.0, 1.0), std::clamp(u, 0.0, 1.0));
+  return difference_at(x, shape, std::clamp(w.first, 0.0, 1.0), std::clamp(w.second, 0.0, 1.0));
 }
 
 /// The sum of all |coordinates| of a configuration.
@@ -130,21 +125,38 @@ double size_of(const FourPoints& x) {
 }
 
 /// The witness on the configuration `x`, with `slack` more for how far `x` may be off.
-bool witness_within(const FourPoints& x, PairShape shape, double h, double slack) {
-  const std::optional<Vec3> d = witness_difference(x, shape);
+bool witness_within(const FourPoints& x, PairShape shape, double h, double slack,
+                    const ClosestWeights& weights) {
+  const std::optional<Vec3> d = witness_difference(x, shape, weights);
   if (!d || !(d->cwiseAbs().maxCoeff() > 1e-140)) return false;  // none, or underflow
   return d->norm() * (1 + 1e-15) + 4e-15 * size_of(x) + slack < h;
 }
 
 }  // namespace
 
+ClosestWeights closest_weights(const FourPoints& x, PairShape shape) {
+  if (shape == PairShape::vertex_face) {
+    const Vec3 w = closest_point_barycentric(x[0], x[1], x[2], x[3]);
+    return {w[1], w[2]};
+  }
+  const auto [s, u] = closest_segment_parameters(x[0], x[1], x[2], x[3]);
+  return {s, u};
+}
+
 bool within_by_closest_points(const FourPoints& x, PairShape shape, double h) {
-  return witness_within(x, shape, h, 0);
+  return within_by_closest_points(x, shape, h, closest_weights(x, shape));
+}
+
+bool within_by_closest_points(const FourPoints& x, PairShape shape, double h,
+                              const ClosestWeights& weights) {
+  return witness_within(x, shape, h, 0, weights);
 }
 
 bool within_by_closest_points(const FourPoints& x0, const FourPoints& x1, double t, PairShape shape,
                               double h) {
-  return witness_within(positions_at(x0, x1, t), shape, h, 1e-15 * (size_of(x0) + size_of(x1)));
+  const FourPoints x = positions_at(x0, x1, t);
+  return witness_within(x, shape, h, 1e-15 * (size_of(x0) + size_of(x1)),
+                        closest_weights(x, shape));
 }
 
 bool apart_along_a_coordinate_axis(const FourPoints& x0, const FourPoints& x1, PairShape shape,
@@ -189,7 +201,15 @@ bool apart_along_normals(const FourPoints& x0, const FourPoints& x1, const Corne
 }
 
 double ClosestDirectionAdvance::clear_from(double t) const {
-  const Vec3 u = closest_direction(positions_at(m_x0, m_x1, t), m_shape);
+  const FourPoints x = positions_at(m_x0, m_x1, t);
+  return clear_along(closest_direction(x, m_shape, closest_weights(x, m_shape)), t);
+}
+
+double ClosestDirectionAdvance::clear_from_start(const ClosestWeights& at_start) const {
+  return clear_along(closest_direction(m_x0, m_shape, at_start), 0);  // x0 is the start
+}
+
+double ClosestDirectionAdvance::clear_along(const Vec3& u, double t) const {
   const double length = u.norm();
   if (!(length > 0) || !std::isfinite(length)) return t;
   const double at_least = reach(length, m_h);

@@ -77,6 +77,18 @@ struct CornerDifferences {
 bool apart_along_normals(const FourPoints& x0, const FourPoints& x1, const CornerDifferences& d,
                          PairShape shape, double h);
 
+/// The weights of the closest points of a configuration, computed in double: the
+/// triangle's weights of b and c (vertex-face, points p, a, b, c) or the two segment
+/// parameters (edge-edge). Formed once at t = 0, they serve both the witness there and the
+/// advancement's first direction.
+struct ClosestWeights {
+  double first = 0;   ///< b's weight, or the first segment's parameter
+  double second = 0;  ///< c's weight, or the second segment's parameter
+};
+
+/// The weights of the closest points of `x` (closest_point.hpp).
+ClosestWeights closest_weights(const FourPoints& x, PairShape shape);
+
 /// clear_along_closest_direction() for repeated calls on one pair (the search calls it up
 /// to hundreds of times): the corner differences at both ends and the sums their error
 /// bounds need are formed once. Keeps references to `x0` and `x1`.
@@ -92,8 +104,14 @@ class ClosestDirectionAdvance {
   /// t1 ≥ `t` such that no two points of the pair are within h at any time of [t, t1]
   /// (t when nothing is proven), as clear_along_closest_direction().
   double clear_from(double t) const;
+  /// clear_from(0) with the closest weights of the start positions `x0` already formed
+  /// (the same direction, the same result).
+  double clear_from_start(const ClosestWeights& at_start) const;
 
  private:
+  // The certified end of the interval from t that direction u clears (t when none).
+  double clear_along(const Vec3& u, double t) const;
+
   const FourPoints& m_x0;
   const FourPoints& m_x1;
   PairShape m_shape;
@@ -111,6 +129,10 @@ class ClosestDirectionAdvance {
 /// sum of all |coordinates| bounds the distance of the two exact points. A difference of
 /// zero, or one too small to square without underflow, refuses.
 bool within_by_closest_points(const FourPoints& x, PairShape shape, double h);
+
+/// The same witness with the closest weights of `x` already formed (closest_weights()).
+bool within_by_closest_points(const FourPoints& x, PairShape shape, double h,
+                              const ClosestWeights& weights);
 
 /// The same witness at the time `t` of the step from `x0` to `x1`: the positions (1 - t) x0 +
 /// t x1 are formed in double, each coordinate within 3·2^-53 (|x0| + |x1|) of the exact one,

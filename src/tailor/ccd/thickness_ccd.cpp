@@ -116,9 +116,11 @@ enum class Reach { h, widened };
 template <class Conditions, class FindNever>
 class EarliestWithin {
  public:
-  EarliestWithin(const StepPoints& m, const CornerDifferences& differences, PairShape shape,
-                 double h, double speed, FindNever find_never, Conditions conditions)
+  EarliestWithin(const StepPoints& m, const CornerDifferences& differences,
+                 const ClosestWeights& at_start, PairShape shape, double h, double speed,
+                 FindNever find_never, Conditions conditions)
       : m_(m),
+        at_start_(at_start),
         shape_(shape),
         h_(h),
         speed_(speed),
@@ -211,7 +213,7 @@ class EarliestWithin {
   bool advance(double& from) {
     double t = 0;
     for (int step = 0; step < kAdvanceSteps; ++step) {
-      const double next = advance_.clear_from(t);
+      const double next = step == 0 ? advance_.clear_from_start(at_start_) : advance_.clear_from(t);
       if (next >= 1) return true;         // clear on the whole step: a miss
       if (next == t && step == 0) break;  // nothing proven (e.g. a degenerate triangle)
       if (next - t >= narrowest_) {
@@ -286,6 +288,7 @@ class EarliestWithin {
   }
 
   const StepPoints& m_;
+  ClosestWeights at_start_;  // the closest points' weights at t = 0, formed for the witness
   PairShape shape_;
   double h_, speed_;
   ClosestDirectionAdvance advance_;
@@ -300,13 +303,54 @@ class EarliestWithin {
   ThicknessResult result_;
 };
 
+/// What the tests before the search leave of a query: the decision they reached, or the
+/// pair's corner differences and the weights of its closest points at t = 0.
+struct Screened {
+  std::optional<ThicknessResult> decided;
+  std::optional<CornerDifferences> differences;
+  ClosestWeights at_start;
+};
+
+/// The result for a pair already within h at t = 0.
+ThicknessResult within_at_start() {
+  ThicknessResult result;
+  result.hit = true, result.toi = 0, result.intervals = 1;
+  return result;
+}
+
+/// The coordinate axes, the pair's normals (unless the caller ran them), and the witness
+/// at t = 0. The corner differences are formed after the witness when the normals are
+/// skipped: the pairs within h at t = 0 (cloth-ball's thickness step: 419,425) never need
+/// them.
+Screened screen(const StepPoints& m, PairShape shape, double h, NormalTest normal_test) {
+  Screened out;
+  if (apart_along_a_coordinate_axis(m.x0, m.x1, shape, h)) {
+    out.decided = ThicknessResult{};
+    return out;
+  }
+  if (normal_test == NormalTest::run) {
+    out.differences.emplace(m.x0, m.x1, shape);
+    if (apart_along_normals(m.x0, m.x1, *out.differences, shape, h)) {
+      out.decided = ThicknessResult{};
+      return out;
+    }
+  }
+  out.at_start = closest_weights(m.x0, shape);
+  if (within_by_closest_points(m.x0, shape, h, out.at_start)) {
+    out.decided = within_at_start();
+    return out;
+  }
+  if (!out.differences) out.differences.emplace(m.x0, m.x1, shape);
+  return out;
+}
+
 template <class Conditions, class FindNever>
-ThicknessResult earliest_within(const StepPoints& m, const CornerDifferences& differences,
-                                PairShape shape, double h, double speed, FindNever&& find_never,
+ThicknessResult earliest_within(const StepPoints& m, const Screened& screened, PairShape shape,
+                                double h, double speed, FindNever&& find_never,
                                 Conditions&& conditions) {
   return EarliestWithin<std::decay_t<Conditions>, std::decay_t<FindNever>>(
-             m, differences, shape, h, speed, std::forward<FindNever>(find_never),
-             std::forward<Conditions>(conditions))
+             m, *screened.differences, screened.at_start, shape, h, speed,
+             std::forward<FindNever>(find_never), std::forward<Conditions>(conditions))
       .run();
 }
 
@@ -322,25 +366,13 @@ double fastest_relative(const StepPoints& m, std::initializer_list<std::pair<int
   return v * (1 + 1e-12);
 }
 
-/// The result for a pair already within h at t = 0.
-ThicknessResult within_at_start() {
-  ThicknessResult result;
-  result.hit = true, result.toi = 0, result.intervals = 1;
-  return result;
-}
-
 }  // namespace
 
 ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& q, double h, NormalTest normal_test) {
   const StepPoints m{{q.p_t0, q.a_t0, q.b_t0, q.c_t0}, {q.p_t1, q.a_t1, q.b_t1, q.c_t1}};
   check_query(m, h, "vertex_face_ccd_within");
-  if (apart_along_a_coordinate_axis(m.x0, m.x1, PairShape::vertex_face, h)) return {};
-  const CornerDifferences differences(m.x0, m.x1, PairShape::vertex_face);
-  if (normal_test == NormalTest::run &&
-      apart_along_normals(m.x0, m.x1, differences, PairShape::vertex_face, h)) {
-    return {};
-  }
-  if (within_by_closest_points(m.x0, PairShape::vertex_face, h)) return within_at_start();
+  const Screened screened = screen(m, PairShape::vertex_face, h, normal_test);
+  if (screened.decided) return *screened.decided;
   const double speed = fastest_relative(m, {{0, 1}, {0, 2}, {0, 3}});
   const auto find_never = [&m] {
     detail::NeverPresent never;
@@ -349,7 +381,7 @@ ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& q, double h, Norma
                      false};
     return never;
   };
-  return earliest_within(m, differences, PairShape::vertex_face, h, speed, find_never,
+  return earliest_within(m, screened, PairShape::vertex_face, h, speed, find_never,
                          [](const auto& pts, const auto& h2, const detail::NeverPresent& n) {
                            return detail::vertex_face(pts, h2, n);
                          });
@@ -359,13 +391,8 @@ ThicknessResult edge_edge_ccd_within(const EdgeEdgeQuery& q, double h, NormalTes
   const StepPoints m{{q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0},
                      {q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1}};
   check_query(m, h, "edge_edge_ccd_within");
-  if (apart_along_a_coordinate_axis(m.x0, m.x1, PairShape::edge_edge, h)) return {};
-  const CornerDifferences differences(m.x0, m.x1, PairShape::edge_edge);
-  if (normal_test == NormalTest::run &&
-      apart_along_normals(m.x0, m.x1, differences, PairShape::edge_edge, h)) {
-    return {};
-  }
-  if (within_by_closest_points(m.x0, PairShape::edge_edge, h)) return within_at_start();
+  const Screened screened = screen(m, PairShape::edge_edge, h, normal_test);
+  if (screened.decided) return *screened.decided;
   const double speed = fastest_relative(m, {{0, 2}, {0, 3}, {1, 2}, {1, 3}});
   const auto find_never = [&m] {
     detail::NeverPresent never;
@@ -374,7 +401,7 @@ ThicknessResult edge_edge_ccd_within(const EdgeEdgeQuery& q, double h, NormalTes
     never.segment = {cd, cd, ab, ab};
     return never;
   };
-  return earliest_within(m, differences, PairShape::edge_edge, h, speed, find_never,
+  return earliest_within(m, screened, PairShape::edge_edge, h, speed, find_never,
                          [](const auto& pts, const auto& h2, const detail::NeverPresent& n) {
                            return detail::edge_edge(pts, h2, n);
                          });

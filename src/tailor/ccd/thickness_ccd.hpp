@@ -14,7 +14,7 @@
 /// Then a witness that the pair is within h at t = 0 (within_by_closest_points(): the closest
 /// points in double, at weights that put the exact points on the primitives, with their rounding
 /// bounded): its earliest time is 0 with no search (on cloth-ball every one of the 419,425 pairs
-/// within h at t = 0).
+/// within h at t = 0). Its closest points also give the advancement's first direction below.
 ///
 /// Then conservative advancement from t = 0 (ccd/separating_axes.hpp): the closest direction u at
 /// t, and the last time up to which every corner difference stays more than h |u| along u,
