@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "tailor/ccd/proximity_conditions.hpp"
+#include "tailor/ccd/separating_axes.hpp"
 
 namespace tailor {
 namespace {
@@ -32,9 +33,26 @@ detail::PointSet<T> point_set(const FourPoints& q) {
   return {{as<T>(q[0]), as<T>(q[1]), as<T>(q[2]), as<T>(q[3])}};
 }
 
-/// The predicate in balls, then, if undecided, in rationals.
+/// The answer in double, when the pair is not within a hair of h: the witness (two points
+/// of the pair within h, their rounding bounded) says yes; the closest direction (every
+/// corner difference more than h along it, certified) says no (ccd/separating_axes.hpp).
+/// Neither can contradict the exact answer; near h, or for input too small or too large to
+/// bound, both refuse. On cloth-ball's proximity search at h = 1e-3 of the diagonal this
+/// decides nearly every candidate at a fraction of the cost of the predicate in balls.
+Truth decided_in_double(const FourPoints& q, PairShape shape, double h) {
+  const ClosestWeights weights = closest_weights(q, shape);
+  if (within_by_closest_points(q, shape, h, weights)) return Truth::yes;
+  // The same configuration at both ends of a "step": cleared over it, apart now.
+  if (ClosestDirectionAdvance(q, q, shape, h).clear_from_start(weights) >= 1) return Truth::no;
+  return Truth::unknown;
+}
+
+/// The answer in double, then the predicate in balls, then, if undecided, in rationals.
 template <class Predicate>
-bool decide_within(const FourPoints& q, double h, Predicate&& predicate) {
+bool decide_within(const FourPoints& q, PairShape shape, double h, Predicate&& predicate) {
+  if (const Truth quick = decided_in_double(q, shape, h); quick != Truth::unknown) {
+    return quick == Truth::yes;
+  }
   const Ball h_ball(h);
   const Truth certified = predicate(point_set<Ball>(q), Ball(h_ball * h_ball));
   if (certified != Truth::unknown) return certified == Truth::yes;
@@ -46,13 +64,14 @@ bool decide_within(const FourPoints& q, double h, Predicate&& predicate) {
 
 bool vertex_face_within(const FourPoints& points, double h) {
   check_inputs(points, h, "vertex_face_within");
-  return decide_within(
-      points, h, [](const auto& pts, const auto& h2) { return detail::vertex_face(pts, h2); });
+  return decide_within(points, PairShape::vertex_face, h, [](const auto& pts, const auto& h2) {
+    return detail::vertex_face(pts, h2);
+  });
 }
 
 bool edge_edge_within(const FourPoints& points, double h) {
   check_inputs(points, h, "edge_edge_within");
-  return decide_within(points, h,
+  return decide_within(points, PairShape::edge_edge, h,
                        [](const auto& pts, const auto& h2) { return detail::edge_edge(pts, h2); });
 }
 

@@ -16,9 +16,12 @@
 ///   w = c-a, n = u×v ≠ 0, the lines' closest points inside both segments
 ///   (0 ≤ (w×v)·n ≤ |n|², 0 ≤ (w×u)·n ≤ |n|²) and (w·n)² ≤ h²|n|². Parallel segments meet
 ///   their distance at an endpoint, which the first conditions cover.
-/// Each condition is decided in rigorous ball arithmetic (ccd/ball.hpp) and, when a ball
-/// cannot decide a sign, the whole predicate is evaluated again in GMP rationals: exact on
-/// the input doubles, whatever the scale of h.
+/// Most pairs are settled before these conditions, in double, by two certified tests
+/// (ccd/separating_axes.hpp): the closest points within h with their rounding bounded
+/// (yes), or every corner difference beyond h along their direction (no). The rest, near h,
+/// have each condition decided in rigorous ball arithmetic (ccd/ball.hpp) and, when a ball
+/// cannot decide a sign, the whole predicate evaluated again in GMP rationals: exact on the
+/// input doubles, whatever the scale of h.
 
 #include "tailor/geometry/types.hpp"
 
