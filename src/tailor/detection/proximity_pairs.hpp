@@ -29,8 +29,8 @@ using ProximityPairs = FeaturePairs;
 ProximityPairs proximity_pairs(const TriangleMesh& mesh, const Positions& x, double thickness);
 
 /// proximity_pairs for repeated calls on one mesh (a simulator's every step): the culling
-/// trees are built on the first call and refitted on later ones (FeatureBoxTrees); the
-/// pairs are those of proximity_pairs.
+/// trees are built on the first call and refitted on later ones (StepFeatureBoxTrees over
+/// the boxes at the one instant); the pairs are those of proximity_pairs.
 class ProximitySearch {
  public:
   /// A search over `mesh`, which must outlive it.
@@ -41,7 +41,7 @@ class ProximitySearch {
 
  private:
   const TriangleMesh* m_mesh;
-  FeatureBoxTrees m_trees;
+  StepFeatureBoxTrees m_trees;
 };
 
 /// The same pairs from the exact test of every vertex-face and edge-edge pair (quadratic;
