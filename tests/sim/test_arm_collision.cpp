@@ -1,6 +1,7 @@
 /// @file
-/// The projection out of the implicit arm: the clearance cache (a Lipschitz bound) must
-/// decide exactly as the uncached projection, over repeated perturb-and-project rounds;
+/// The projection out of the implicit arm: the clearance cache (a Lipschitz bound, and the
+/// vertices left unmoved where a projection settled them) must decide exactly as the
+/// uncached projection, over repeated perturb-and-project rounds;
 /// and projecting a projected state again moves nothing.
 
 #include <gtest/gtest.h>
@@ -45,10 +46,13 @@ TEST(ArmCollision, ClearanceCacheDecidesExactlyAsTheQueries) {
   cache.reset(n);
   std::int64_t projected = 0;
   for (int round = 0; round < 30; ++round) {
-    // The same small random motion for both (as a strain-limiting sweep would make).
+    // The same small random motion for both (as a strain-limiting sweep would make); in odd
+    // rounds only about half of the vertices move (a sweep corrects some edges only), so
+    // vertices the last projection settled on the margin are met again unmoved.
     const double step = round % 3 == 0 ? 2e-3 : 2e-4;
     for (Eigen::Index i = 0; i < n; ++i) {
       const Eigen::RowVector3d d(unit(rng), unit(rng), unit(rng));
+      if (round % 2 == 1 && d.x() < 0) continue;
       plain.row(i) += step * d;
       cached.row(i) += step * d;
     }

@@ -110,17 +110,22 @@ ArmCollisionStats project_out_of_arm(const ArmMotion& arm_motion, const Position
   const auto project = [&](Eigen::Index i, double& max_depth) {
     if (!fixed.empty() && fixed[static_cast<std::size_t>(i)] != 0) return false;
     Vec3 p = x1.row(i).transpose();
-    if (cache != nullptr && cache->surely_clear(static_cast<Index>(i), p)) return false;
+    if (cache != nullptr && cache->known_unmoved(static_cast<Index>(i), p)) return false;
     const double clearance = arm.signed_distance(skeleton1, p) - margin;  // cheap test first
     if (clearance >= 0) {
       if (cache != nullptr) cache->store(static_cast<Index>(i), p, clearance);
       return false;
     }
-    bool moved = false;
+    bool moved = false, settled = false;
     // A few passes: in the elbow crease, leaving one cone can enter the other.
     for (int pass = 0; pass < 4; ++pass) {
       const ArmDistance d = arm.distance(skeleton1, p);
-      if (d.distance >= margin * (1 - kMarginRounding)) break;
+      if (d.distance >= margin * (1 - kMarginRounding)) {
+        // The same p would be decided the same way again (its signed distance is below
+        // the margin, its distance not): it stays.
+        settled = true;
+        break;
+      }
       const double depth = margin - d.distance;
       max_depth = std::max(max_depth, depth);
       p += depth * d.normal;
@@ -134,10 +139,14 @@ ArmCollisionStats project_out_of_arm(const ArmMotion& arm_motion, const Position
       }
       moved = true;
     }
-    if (moved) {
-      if (cache != nullptr) cache->store(static_cast<Index>(i), p, 0.0);
-      x1.row(i) = p.transpose();
+    if (cache != nullptr) {
+      if (settled) {
+        cache->settle(static_cast<Index>(i), p);
+      } else {
+        cache->store(static_cast<Index>(i), p, 0.0);
+      }
     }
+    if (moved) x1.row(i) = p.transpose();
     return moved;
   };
 

@@ -105,10 +105,21 @@ class ArmClearanceCache {
  public:
   /// Forgets everything; `vertices` cloth vertices.
   void reset(Index vertices);
-  /// Whether `p` (vertex `i`) is certainly at least the margin outside the arm.
-  bool surely_clear(Index i, const Vec3& p) const {
+  /// Whether projecting `p` (vertex `i`) is known to leave it where it is: it is certainly
+  /// at least the margin outside the arm, or it is exactly where an earlier projection
+  /// found it far enough out (settle()), and the projection decides the same input the
+  /// same way. In the strain limiter's sweeps most vertices lying on the arm are not moved
+  /// from one sweep to the next.
+  bool known_unmoved(Index i, const Vec3& p) const {
     const auto k = static_cast<std::size_t>(i);
+    if (m_clearance[k] < 0) return p == m_where[k];
     return (p - m_where[k]).squaredNorm() < m_clearance[k] * m_clearance[k];
+  }
+  /// Records that the projection leaves vertex `i` at `p` where it is (its distance test at
+  /// exactly `p` passed).
+  void settle(Index i, const Vec3& p) {
+    m_where[static_cast<std::size_t>(i)] = p;
+    m_clearance[static_cast<std::size_t>(i)] = -1;
   }
   /// Records that vertex `i` at `p` clears the margin by `clearance` (≥ 0), less a
   /// nanometre so that rounding in the distance cannot make a skipped vertex one the
@@ -122,7 +133,7 @@ class ArmClearanceCache {
 
  private:
   std::vector<Vec3> m_where;
-  std::vector<double> m_clearance;  // 0: nothing known
+  std::vector<double> m_clearance;  // 0: nothing known; -1: settled at m_where exactly
 };
 
 /// How project_out_of_arm moves the vertices.
