@@ -74,7 +74,6 @@ FeaturePairs BasicFeatureBoxTrees<Box>::overlapping_pairs(const TriangleMesh& me
   return pairs;
 }
 
-template class BasicFeatureBoxTrees<Aabb>;
 template class BasicFeatureBoxTrees<StepBox>;
 
 }  // namespace tailor

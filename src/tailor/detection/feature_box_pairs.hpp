@@ -17,8 +17,8 @@ namespace tailor {
 /// searches on one mesh: built on the first update, refitted on later ones. A refitted tree
 /// finds the same pairs as a new one (every node's box is recomputed from its leaves); it
 /// only gets slower when the mesh has moved far from the configuration it was built on.
-/// `Box` is Aabb (FeatureBoxTrees: boxes at one instant, or swept) or StepBox
-/// (StepFeatureBoxTrees: boxes at both ends of a step, whose pairs are those that may meet).
+/// `Box` is StepBox (StepFeatureBoxTrees: boxes at both ends of a step, whose pairs are
+/// those that may meet; one instant is the same box at both ends).
 template <class Box>
 class BasicFeatureBoxTrees {
  public:
@@ -38,8 +38,6 @@ class BasicFeatureBoxTrees {
   BasicBvh<Box> m_vertices, m_edges, m_faces;
 };
 
-/// Trees over boxes at one instant (or swept boxes).
-using FeatureBoxTrees = BasicFeatureBoxTrees<Aabb>;
 /// Trees over boxes at both ends of a step.
 using StepFeatureBoxTrees = BasicFeatureBoxTrees<StepBox>;
 
