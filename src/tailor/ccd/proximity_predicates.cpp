@@ -42,8 +42,7 @@ detail::PointSet<T> point_set(const FourPoints& q) {
 Truth decided_in_double(const FourPoints& q, PairShape shape, double h) {
   const ClosestWeights weights = closest_weights(q, shape);
   if (within_by_closest_points(q, shape, h, weights)) return Truth::yes;
-  // The same configuration at both ends of a "step": cleared over it, apart now.
-  if (ClosestDirectionAdvance(q, q, shape, h).clear_from_start(weights) >= 1) return Truth::no;
+  if (apart_along_closest_direction(q, shape, h, weights)) return Truth::no;
   return Truth::unknown;
 }
 

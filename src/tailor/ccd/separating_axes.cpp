@@ -200,6 +200,20 @@ bool apart_along_normals(const FourPoints& x0, const FourPoints& x1, const Corne
   return false;
 }
 
+bool apart_along_closest_direction(const FourPoints& x, PairShape shape, double h,
+                                   const ClosestWeights& weights) {
+  const Vec3 u = closest_direction(x, shape, weights);
+  const double length = u.norm();
+  if (!(length > 0) || !std::isfinite(length)) return false;
+  const double at_least = reach(length, h);
+  const double largest = u.cwiseAbs().maxCoeff();
+  for (const auto& [i, j] : differences(shape)) {
+    const double size = (x[i].cwiseAbs() + x[j].cwiseAbs()).sum();
+    if (!(projection_at_least(u, largest, x[j] - x[i], size) > at_least)) return false;
+  }
+  return true;
+}
+
 double ClosestDirectionAdvance::clear_from(double t) const {
   const FourPoints x = positions_at(m_x0, m_x1, t);
   return clear_along(closest_direction(x, m_shape, closest_weights(x, m_shape)), t);

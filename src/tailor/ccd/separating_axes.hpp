@@ -89,6 +89,13 @@ struct ClosestWeights {
 /// The weights of the closest points of `x` (closest_point.hpp).
 ClosestWeights closest_weights(const FourPoints& x, PairShape shape);
 
+/// Whether the closest direction of the configuration `x` (one instant; the closest weights
+/// `weights` already formed) certainly keeps the pair more than `h` apart: every corner
+/// difference d_k of `x` reaches beyond h |u| along it (the argument above at one instant,
+/// without the interpolation in t). The proximity predicates' quick "no".
+bool apart_along_closest_direction(const FourPoints& x, PairShape shape, double h,
+                                   const ClosestWeights& weights);
+
 /// clear_along_closest_direction() for repeated calls on one pair (the search calls it up
 /// to hundreds of times): the corner differences at both ends and the sums their error
 /// bounds need are formed once. Keeps references to `x0` and `x1`.
