@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cmath>
@@ -89,8 +90,9 @@ ProximityPairs ProximitySearch::pairs(const Positions& x, double thickness) {
   pairs.edge_edge = keep_within(std::move(candidates.edge_edge), [&](const EdgeEdgePair& p) {
     return edge_edge_within(edge_edge_points(mesh, x, p.edge_a, p.edge_b), thickness);
   });
-  std::sort(pairs.vertex_face.begin(), pairs.vertex_face.end(), by_vertex);
-  std::sort(pairs.edge_edge.begin(), pairs.edge_edge.end(), by_edges);
+  // Each pair once, so the order is total: the same on any number of threads.
+  tbb::parallel_sort(pairs.vertex_face.begin(), pairs.vertex_face.end(), by_vertex);
+  tbb::parallel_sort(pairs.edge_edge.begin(), pairs.edge_edge.end(), by_edges);
   return pairs;
 }
 
