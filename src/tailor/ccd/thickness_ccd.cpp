@@ -12,7 +12,9 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
+#include "tailor/ccd/advance_lanes.hpp"
 #include "tailor/ccd/proximity_conditions.hpp"
 #include "tailor/ccd/separating_axes.hpp"
 
@@ -105,6 +107,27 @@ void check_query(const StepPoints& m, double h, const char* what) {
   }
 }
 
+/// Most advancement calls before the bisection takes over. A call costs a fraction of one
+/// interval of the bisection, and pairs that come within h after t = 0 took ~19 intervals
+/// after 12 calls (cloth-ball's thickness step: its search 6.7 → 3.3 s on one thread with
+/// 200; 1,000 gained nothing more).
+constexpr int kAdvanceSteps = 200;
+
+/// The narrowest interval of the search: L w / 2 ≤ 1e-6 h (with room for rounding), and
+/// w ≤ 1e-6, L = `speed`.
+double narrowest_interval(double h, double speed) {
+  return std::min(1e-6, 1.9e-6 * h / speed);
+}
+
+/// Where the advancement from t = 0 has got to when the search starts (the vector lanes'
+/// PairAdvance): nothing yet by default.
+struct AdvanceStart {
+  double t = 0;
+  int step = 0;
+  double next = 0;        // the result of call `step`, when has_next
+  bool has_next = false;  // call `step` has been made
+};
+
 /// Which distance a decision at one time is against: h, or h √(1 + 2e-6) ≤ (1 + 1e-6) h
 /// (the narrowest intervals' midpoints).
 enum class Reach { h, widened };
@@ -118,7 +141,7 @@ class EarliestWithin {
  public:
   EarliestWithin(const StepPoints& m, const CornerDifferences& differences,
                  const ClosestWeights& at_start, PairShape shape, double h, double speed,
-                 FindNever find_never, Conditions conditions)
+                 FindNever find_never, Conditions conditions, AdvanceStart start = {})
       : m_(m),
         at_start_(at_start),
         shape_(shape),
@@ -130,8 +153,8 @@ class EarliestWithin {
         h2_(Ball(h) * Ball(h)),
         // 500001 / 500000 rounds to the double 1.000002 within 2^-53 of it.
         widened_h2_(h2_ * Ball(1.000002, 0x1p-52)),
-        // The narrowest interval: L w / 2 ≤ 1e-6 h (with room for rounding), and w ≤ 1e-6.
-        narrowest_(std::min(1e-6, 1.9e-6 * h / speed)) {}
+        narrowest_(narrowest_interval(h, speed)),
+        start_(start) {}
 
   ThicknessResult run() {
     if (speed_ == 0) {  // nothing moves relative to the other primitive: one decision
@@ -211,9 +234,11 @@ class EarliestWithin {
   /// Returns true with result_ set when that decides the pair; otherwise `from` is the end
   /// of the prefix [0, from] proven clear, where the bisection takes over.
   bool advance(double& from) {
-    double t = 0;
-    for (int step = 0; step < kAdvanceSteps; ++step) {
-      const double next = step == 0 ? advance_.clear_from_start(at_start_) : advance_.clear_from(t);
+    double t = start_.t;
+    for (int step = start_.step; step < kAdvanceSteps; ++step) {
+      const double next = step == start_.step && start_.has_next ? start_.next
+                          : step == 0 ? advance_.clear_from_start(at_start_)
+                                      : advance_.clear_from(t);
       if (next >= 1) return true;         // clear on the whole step: a miss
       if (next == t && step == 0) break;  // nothing proven (e.g. a degenerate triangle)
       if (next - t >= narrowest_) {
@@ -232,11 +257,6 @@ class EarliestWithin {
     from = t;
     return false;
   }
-  /// Most advancement calls before the bisection takes over. A call costs a fraction of
-  /// one interval of the bisection, and pairs that come within h after t = 0 took ~19
-  /// intervals after 12 calls (cloth-ball's thickness step: its search 6.7 → 3.3 s on one
-  /// thread with 200; 1,000 gained nothing more).
-  static constexpr int kAdvanceSteps = 200;
 
   ThicknessResult hit(double toi, bool exhausted) {
     result_.hit = true, result_.toi = toi, result_.exhausted = exhausted;
@@ -300,6 +320,7 @@ class EarliestWithin {
   // more than a ball evaluation of the conditions.
   mutable std::optional<mpq_class> exact_h2_, exact_widened_h2_;
   double narrowest_;
+  AdvanceStart start_;
   ThicknessResult result_;
 };
 
@@ -347,10 +368,10 @@ Screened screen(const StepPoints& m, PairShape shape, double h, NormalTest norma
 template <class Conditions, class FindNever>
 ThicknessResult earliest_within(const StepPoints& m, const Screened& screened, PairShape shape,
                                 double h, double speed, FindNever&& find_never,
-                                Conditions&& conditions) {
+                                Conditions&& conditions, AdvanceStart start = {}) {
   return EarliestWithin<std::decay_t<Conditions>, std::decay_t<FindNever>>(
              m, *screened.differences, screened.at_start, shape, h, speed,
-             std::forward<FindNever>(find_never), std::forward<Conditions>(conditions))
+             std::forward<FindNever>(find_never), std::forward<Conditions>(conditions), start)
       .run();
 }
 
@@ -368,32 +389,49 @@ double fastest_relative(const StepPoints& m, std::initializer_list<std::pair<int
 
 }  // namespace
 
-ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& q, double h, NormalTest normal_test) {
+namespace {
+
+/// A query's points (PairShape's order), checked.
+StepPoints points_of(const VertexFaceQuery& q, double h) {
   const StepPoints m{{q.p_t0, q.a_t0, q.b_t0, q.c_t0}, {q.p_t1, q.a_t1, q.b_t1, q.c_t1}};
   check_query(m, h, "vertex_face_ccd_within");
-  const Screened screened = screen(m, PairShape::vertex_face, h, normal_test);
-  if (screened.decided) return *screened.decided;
-  const double speed = fastest_relative(m, {{0, 1}, {0, 2}, {0, 3}});
-  const auto find_never = [&m] {
-    detail::NeverPresent never;
-    never.normal = normal_always_zero(m, {1, 2, 1, 3});
-    never.segment = {always_together(m, 1, 2), always_together(m, 2, 3), always_together(m, 3, 1),
-                     false};
-    return never;
-  };
-  return earliest_within(m, screened, PairShape::vertex_face, h, speed, find_never,
-                         [](const auto& pts, const auto& h2, const detail::NeverPresent& n) {
-                           return detail::vertex_face(pts, h2, n);
-                         });
+  return m;
 }
-
-ThicknessResult edge_edge_ccd_within(const EdgeEdgeQuery& q, double h, NormalTest normal_test) {
+StepPoints points_of(const EdgeEdgeQuery& q, double h) {
   const StepPoints m{{q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0},
                      {q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1}};
   check_query(m, h, "edge_edge_ccd_within");
-  const Screened screened = screen(m, PairShape::edge_edge, h, normal_test);
-  if (screened.decided) return *screened.decided;
-  const double speed = fastest_relative(m, {{0, 2}, {0, 3}, {1, 2}, {1, 3}});
+  return m;
+}
+
+template <class Query>
+constexpr PairShape kShapeOf =
+    std::is_same_v<Query, VertexFaceQuery> ? PairShape::vertex_face : PairShape::edge_edge;
+
+/// The bound on how fast the pair's distance changes (fastest_relative()).
+double speed_of(const StepPoints& m, PairShape shape) {
+  if (shape == PairShape::vertex_face) return fastest_relative(m, {{0, 1}, {0, 2}, {0, 3}});
+  return fastest_relative(m, {{0, 2}, {0, 3}, {1, 2}, {1, 3}});
+}
+
+/// The search of a screened pair, its advancement started at `start`.
+ThicknessResult search(const StepPoints& m, const Screened& screened, PairShape shape, double h,
+                       double speed, AdvanceStart start = {}) {
+  if (shape == PairShape::vertex_face) {
+    const auto find_never = [&m] {
+      detail::NeverPresent never;
+      never.normal = normal_always_zero(m, {1, 2, 1, 3});
+      never.segment = {always_together(m, 1, 2), always_together(m, 2, 3), always_together(m, 3, 1),
+                       false};
+      return never;
+    };
+    return earliest_within(
+        m, screened, shape, h, speed, find_never,
+        [](const auto& pts, const auto& h2, const detail::NeverPresent& n) {
+          return detail::vertex_face(pts, h2, n);
+        },
+        start);
+  }
   const auto find_never = [&m] {
     detail::NeverPresent never;
     never.normal = normal_always_zero(m, {0, 1, 2, 3});
@@ -401,10 +439,87 @@ ThicknessResult edge_edge_ccd_within(const EdgeEdgeQuery& q, double h, NormalTes
     never.segment = {cd, cd, ab, ab};
     return never;
   };
-  return earliest_within(m, screened, PairShape::edge_edge, h, speed, find_never,
-                         [](const auto& pts, const auto& h2, const detail::NeverPresent& n) {
-                           return detail::edge_edge(pts, h2, n);
-                         });
+  return earliest_within(
+      m, screened, shape, h, speed, find_never,
+      [](const auto& pts, const auto& h2, const detail::NeverPresent& n) {
+        return detail::edge_edge(pts, h2, n);
+      },
+      start);
+}
+
+template <class Query>
+ThicknessResult one_query(const Query& q, double h, NormalTest normal_test) {
+  constexpr PairShape kShape = kShapeOf<Query>;
+  const StepPoints m = points_of(q, h);
+  const Screened screened = screen(m, kShape, h, normal_test);
+  if (screened.decided) return *screened.decided;
+  return search(m, screened, kShape, h, speed_of(m, kShape));
+}
+
+/// The screening and the pairs that do not move relative to each other one by one; the
+/// others' advancements in vector lanes, then each one's search where it stopped.
+template <class Query>
+void batch(std::span<const Query> queries, double h, NormalTest normal_test,
+           std::span<ThicknessResult> results) {
+  constexpr PairShape kShape = kShapeOf<Query>;
+  if (results.size() != queries.size()) {
+    throw std::invalid_argument("ccd_within: as many results as queries");
+  }
+  struct Searched {
+    std::size_t query;
+    StepPoints m;
+    Screened screened;
+    double speed;
+  };
+  // Per thread, kept from call to call: a fresh chunk's worth (~0.5 MB for 1,024 queries)
+  // would be mapped and faulted in anew each time.
+  thread_local std::vector<Searched> searched;
+  thread_local std::vector<PairAdvance> advances;
+  searched.clear();
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    const StepPoints m = points_of(queries[i], h);
+    Screened screened = screen(m, kShape, h, normal_test);
+    const double speed = screened.decided ? 0 : speed_of(m, kShape);
+    if (screened.decided) {
+      results[i] = *screened.decided;
+    } else if (speed == 0) {
+      results[i] = search(m, screened, kShape, h, speed);
+    } else {
+      searched.push_back({i, m, std::move(screened), speed});
+    }
+  }
+  advances.resize(searched.size());
+  for (std::size_t j = 0; j < searched.size(); ++j) {
+    const Searched& s = searched[j];
+    advances[j] = {&s.m.x0, &s.m.x1, &*s.screened.differences, narrowest_interval(h, s.speed)};
+  }
+  advance_pairs(advances, kShape, h, kAdvanceSteps);
+  for (std::size_t j = 0; j < searched.size(); ++j) {
+    const Searched& s = searched[j];
+    const PairAdvance& a = advances[j];
+    results[s.query] =
+        search(s.m, s.screened, kShape, h, s.speed, {a.t, a.step, a.next, a.has_next});
+  }
+}
+
+}  // namespace
+
+ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& q, double h, NormalTest normal_test) {
+  return one_query(q, h, normal_test);
+}
+
+ThicknessResult edge_edge_ccd_within(const EdgeEdgeQuery& q, double h, NormalTest normal_test) {
+  return one_query(q, h, normal_test);
+}
+
+void vertex_face_ccd_within(std::span<const VertexFaceQuery> queries, double h,
+                            NormalTest normal_test, std::span<ThicknessResult> results) {
+  batch(queries, h, normal_test, results);
+}
+
+void edge_edge_ccd_within(std::span<const EdgeEdgeQuery> queries, double h, NormalTest normal_test,
+                          std::span<ThicknessResult> results) {
+  batch(queries, h, normal_test, results);
 }
 
 }  // namespace tailor

@@ -60,6 +60,8 @@
 /// that has not ended after kMaxIntervals intervals reports the pair at the start of the interval
 /// it was on (conservative, counted in `exhausted`).
 
+#include <span>
+
 #include "tailor/ccd/ccd.hpp"
 
 namespace tailor {
@@ -94,5 +96,17 @@ ThicknessResult vertex_face_ccd_within(const VertexFaceQuery& query, double h,
 /// std::invalid_argument on a non-finite input or h ≤ 0.
 ThicknessResult edge_edge_ccd_within(const EdgeEdgeQuery& query, double h,
                                      NormalTest normal_test = NormalTest::run);
+
+/// vertex_face_ccd_within() of every query of `queries` into `results` (as many; throws
+/// std::invalid_argument otherwise), the same results: the advancements of the pairs that
+/// reach the search run several at a time in vector lanes (ccd/advance_lanes.hpp), each bit
+/// for bit as one query runs it (cloth-ball's thickness step: the exact-CCD stage ~1.3×
+/// faster).
+void vertex_face_ccd_within(std::span<const VertexFaceQuery> queries, double h,
+                            NormalTest normal_test, std::span<ThicknessResult> results);
+
+/// edge_edge_ccd_within() of every query of `queries` into `results`, as above.
+void edge_edge_ccd_within(std::span<const EdgeEdgeQuery> queries, double h, NormalTest normal_test,
+                          std::span<ThicknessResult> results);
 
 }  // namespace tailor

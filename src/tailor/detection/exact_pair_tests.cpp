@@ -20,12 +20,6 @@ CcdResult touching_ccd(const VertexFaceQuery& q) {
 CcdResult touching_ccd(const EdgeEdgeQuery& q) {
   return edge_edge_ccd(q);
 }
-ThicknessResult within_ccd(const VertexFaceQuery& q, double h, NormalTest normal_test) {
-  return vertex_face_ccd_within(q, h, normal_test);
-}
-ThicknessResult within_ccd(const EdgeEdgeQuery& q, double h, NormalTest normal_test) {
-  return edge_edge_ccd_within(q, h, normal_test);
-}
 
 EdgeEdgeCollision make_edge_edge(const EdgeArray& edges, Index e1, Index e2, double toi) {
   // Edges are stored (a, b) with a < b; order the two edges by their vertex ids.
@@ -74,8 +68,9 @@ void ExactPairTester::test(const TriangleMesh& mesh, const Positions& x0, const 
   };
   std::vector<Chunk> chunks;
   const auto add_chunks = [&](bool edge_edge, std::size_t block, std::size_t size) {
-    for (std::size_t begin = 0; begin < size; begin += kChunkPairs) {
-      chunks.push_back({edge_edge, block, begin, std::min(size, begin + kChunkPairs)});
+    const std::size_t pairs = m_thickness > 0 ? kThicknessChunkPairs : kChunkPairs;
+    for (std::size_t begin = 0; begin < size; begin += pairs) {
+      chunks.push_back({edge_edge, block, begin, std::min(size, begin + pairs)});
     }
   };
   for (std::size_t b = 0; b < vertex_face_blocks.size(); ++b) {
@@ -89,7 +84,11 @@ void ExactPairTester::test(const TriangleMesh& mesh, const Positions& x0, const 
   tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t k) {
     const Chunk& chunk = chunks[k];
     ThreadOutput& out = m_outputs.local();
-    if (!chunk.edge_edge) {
+    if (!chunk.edge_edge && m_thickness > 0) {
+      within_thickness(
+          mesh, x0, x1,
+          vertex_face_blocks[chunk.block].subspan(chunk.begin, chunk.end - chunk.begin), out);
+    } else if (!chunk.edge_edge) {
       const std::span<const VertexFacePair> pairs = vertex_face_blocks[chunk.block];
       for (std::size_t i = chunk.begin; i < chunk.end; ++i) {
         const auto [v, f] = pairs[i];
@@ -100,6 +99,10 @@ void ExactPairTester::test(const TriangleMesh& mesh, const Positions& x0, const 
           out.vertex_face.push_back({v, f, *toi});
         }
       }
+    } else if (m_thickness > 0) {
+      within_thickness(mesh, x0, x1,
+                       edge_edge_blocks[chunk.block].subspan(chunk.begin, chunk.end - chunk.begin),
+                       out);
     } else {
       const std::span<const EdgeEdgePair> pairs = edge_edge_blocks[chunk.block];
       for (std::size_t i = chunk.begin; i < chunk.end; ++i) {
@@ -115,13 +118,48 @@ void ExactPairTester::test(const TriangleMesh& mesh, const Positions& x0, const 
   });
 }
 
+void ExactPairTester::within_thickness(const TriangleMesh& mesh, const Positions& x0,
+                                       const Positions& x1, std::span<const VertexFacePair> pairs,
+                                       ThreadOutput& out) const {
+  // The whole chunk at once: the advancements run in vector lanes (ccd/advance_lanes.hpp).
+  const FaceArray& faces = mesh.faces();
+  std::vector<VertexFaceQuery>& queries = out.vertex_face_queries;
+  queries.clear();
+  for (const auto [v, f] : pairs) {
+    const Index a = faces(f, 0), b = faces(f, 1), c = faces(f, 2);
+    queries.push_back(
+        {x0.row(v), x0.row(a), x0.row(b), x0.row(c), x1.row(v), x1.row(a), x1.row(b), x1.row(c)});
+  }
+  std::vector<ThicknessResult>& results = out.results;
+  results.resize(pairs.size());
+  vertex_face_ccd_within(queries, m_thickness, m_normal_test, results);
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    if (results[i].hit) out.vertex_face.push_back({pairs[i].vertex, pairs[i].face, results[i].toi});
+  }
+}
+
+void ExactPairTester::within_thickness(const TriangleMesh& mesh, const Positions& x0,
+                                       const Positions& x1, std::span<const EdgeEdgePair> pairs,
+                                       ThreadOutput& out) const {
+  const EdgeArray& edges = mesh.edges();
+  std::vector<EdgeEdgeQuery>& queries = out.edge_edge_queries;
+  queries.clear();
+  for (const auto [e1, e2] : pairs) {
+    const Index a = edges(e1, 0), b = edges(e1, 1), c = edges(e2, 0), d = edges(e2, 1);
+    queries.push_back(
+        {x0.row(a), x0.row(b), x0.row(c), x0.row(d), x1.row(a), x1.row(b), x1.row(c), x1.row(d)});
+  }
+  std::vector<ThicknessResult>& results = out.results;
+  results.resize(pairs.size());
+  edge_edge_ccd_within(queries, m_thickness, m_normal_test, results);
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    if (results[i].hit) out.edge_edge.push_back({pairs[i].edge_a, pairs[i].edge_b, results[i].toi});
+  }
+}
+
 template <class Query>
 std::optional<double> ExactPairTester::time_of_impact(const Query& query,
                                                       std::int64_t& exact) const {
-  if (m_thickness > 0) {
-    const ThicknessResult result = within_ccd(query, m_thickness, m_normal_test);
-    return result.hit ? std::optional<double>(result.toi) : std::nullopt;
-  }
   const CcdResult result = touching_ccd(query);
   exact += result.path == CcdPath::exact || result.path == CcdPath::gmp;
   return result.hit ? std::optional<double>(result.toi) : std::nullopt;

@@ -8,6 +8,7 @@
 #include <deque>
 #include <optional>
 #include <span>
+#include <vector>
 
 #include "tailor/candidates/primitive_pair.hpp"
 #include "tailor/ccd/thickness_ccd.hpp"
@@ -48,6 +49,9 @@ class ExactPairTester {
   /// and EE pairs of each block in separate loops of 256-pair tasks, two threads ran
   /// that stage only 1.15× as fast as one.
   static constexpr std::size_t kChunkPairs = 64;
+  /// Pairs per task with a thickness: the chunk's advancements share vector lanes
+  /// (ccd/advance_lanes.hpp), which stay full longer in a larger chunk.
+  static constexpr std::size_t kThicknessChunkPairs = 1024;
   /// Hands over the collisions since begin_step(), sorted and without duplicates, so the
   /// result does not depend on the batches, their order or the thread count. The
   /// per-thread blocks are released as they are copied into the result. `mesh` is the
@@ -67,11 +71,20 @@ class ExactPairTester {
     std::deque<VertexFaceCollision> vertex_face;
     std::deque<EdgeEdgeHit> edge_edge;
     std::int64_t exact = 0;
+    // A thickness chunk's queries and results, kept from chunk to chunk.
+    std::vector<VertexFaceQuery> vertex_face_queries;
+    std::vector<EdgeEdgeQuery> edge_edge_queries;
+    std::vector<ThicknessResult> results;
   };
-  // The pair's time of impact (touching, or coming within m_thickness), if it has one;
-  // counts a query the exact path decided in `exact`.
+  // The pair's time of impact (touching; m_thickness is 0), if it has one; counts a query
+  // the exact path decided in `exact`.
   template <class Query>
   std::optional<double> time_of_impact(const Query& query, std::int64_t& exact) const;
+  // The pairs of one chunk against m_thickness (> 0), together.
+  void within_thickness(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
+                        std::span<const VertexFacePair> pairs, ThreadOutput& out) const;
+  void within_thickness(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
+                        std::span<const EdgeEdgePair> pairs, ThreadOutput& out) const;
 
   tbb::enumerable_thread_specific<ThreadOutput> m_outputs;
   double m_thickness = 0;
