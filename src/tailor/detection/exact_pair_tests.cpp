@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <optional>
@@ -67,8 +68,15 @@ void ExactPairTester::test(const TriangleMesh& mesh, const Positions& x0, const 
     std::size_t block, begin, end;
   };
   std::vector<Chunk> chunks;
+  // With a thickness, chunks as large as leave about eight per thread.
+  std::size_t total = 0;
+  for (const auto& block : vertex_face_blocks) total += block.size();
+  for (const auto& block : edge_edge_blocks) total += block.size();
+  const auto threads = static_cast<std::size_t>(tbb::this_task_arena::max_concurrency());
+  const std::size_t pairs =
+      m_thickness > 0 ? std::clamp(total / (8 * threads), kChunkPairs, kThicknessChunkPairs)
+                      : kChunkPairs;
   const auto add_chunks = [&](bool edge_edge, std::size_t block, std::size_t size) {
-    const std::size_t pairs = m_thickness > 0 ? kThicknessChunkPairs : kChunkPairs;
     for (std::size_t begin = 0; begin < size; begin += pairs) {
       chunks.push_back({edge_edge, block, begin, std::min(size, begin + pairs)});
     }

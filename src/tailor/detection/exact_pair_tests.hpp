@@ -49,8 +49,9 @@ class ExactPairTester {
   /// and EE pairs of each block in separate loops of 256-pair tasks, two threads ran
   /// that stage only 1.15× as fast as one.
   static constexpr std::size_t kChunkPairs = 64;
-  /// Pairs per task with a thickness: the chunk's advancements share vector lanes
-  /// (ccd/advance_lanes.hpp), which stay full longer in a larger chunk.
+  /// Most pairs per task with a thickness: the chunk's advancements share vector lanes
+  /// (ccd/advance_lanes.hpp), which stay full longer in a larger chunk; a call with few
+  /// pairs still gets about eight chunks per thread (at least kChunkPairs pairs each).
   static constexpr std::size_t kThicknessChunkPairs = 1024;
   /// Hands over the collisions since begin_step(), sorted and without duplicates, so the
   /// result does not depend on the batches, their order or the thread count. The
