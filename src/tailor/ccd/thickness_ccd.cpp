@@ -471,7 +471,7 @@ void batch(std::span<const Query> queries, double h, NormalTest normal_test,
     Screened screened;
     double speed;
   };
-  // Per thread, kept from call to call: a fresh chunk's worth (~0.5 MB for 1,024 queries)
+  // Per thread, kept from call to call: a fresh vector for each chunk (~0.5 KB a query)
   // would be mapped and faulted in anew each time.
   thread_local std::vector<Searched> searched;
   thread_local std::vector<PairAdvance> advances;

@@ -52,7 +52,7 @@ class ExactPairTester {
   /// Most pairs per task with a thickness: the chunk's advancements share vector lanes
   /// (ccd/advance_lanes.hpp), which stay full longer in a larger chunk; a call with few
   /// pairs still gets about eight chunks per thread (at least kChunkPairs pairs each).
-  static constexpr std::size_t kThicknessChunkPairs = 1024;
+  static constexpr std::size_t kThicknessChunkPairs = 256;
   /// Hands over the collisions since begin_step(), sorted and without duplicates, so the
   /// result does not depend on the batches, their order or the thread count. The
   /// per-thread blocks are released as they are copied into the result. `mesh` is the
