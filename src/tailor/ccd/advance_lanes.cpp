@@ -3,6 +3,7 @@
 
 #include "tailor/ccd/advance_lanes.hpp"
 
+#include <algorithm>
 #include <limits>
 
 #include "tailor/bvh/lane_vectors.hpp"
@@ -19,17 +20,18 @@ namespace {
 namespace detail {
 
 void advance_pairs_two_lanes(std::span<PairAdvance> pairs, PairShape shape, double h,
-                             int max_steps) {
-  sse2::advance_pairs(pairs, shape, h, max_steps);
+                             double witness_reach, int max_steps) {
+  sse2::advance_pairs(pairs, shape, h, witness_reach, max_steps);
 }
 
 }  // namespace detail
 
-void advance_pairs(std::span<PairAdvance> pairs, PairShape shape, double h, int max_steps) {
-  using Kernel = void (*)(std::span<PairAdvance>, PairShape, double, int);
+void advance_pairs(std::span<PairAdvance> pairs, PairShape shape, double h, double witness_reach,
+                   int max_steps) {
+  using Kernel = void (*)(std::span<PairAdvance>, PairShape, double, double, int);
   static const Kernel kernel =
       lanes::widest<Kernel>(avx512::advance_pairs, avx2::advance_pairs, sse2::advance_pairs);
-  kernel(pairs, shape, h, max_steps);
+  kernel(pairs, shape, h, witness_reach, max_steps);
 }
 
 }  // namespace tailor

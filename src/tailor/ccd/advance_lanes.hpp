@@ -36,19 +36,25 @@ struct PairAdvance {
   double next = 0;
   /// Out: whether the advancement stopped at a call's result (`next`).
   bool has_next = false;
+  /// Out: whether it stopped on an advance shorter than `narrowest` and the pair is
+  /// certainly within the witness reach at the midpoint of [next, min(1, next +
+  /// narrowest)] (within_by_closest_points(): EarliestWithin's first decision there).
+  bool within_after = false;
 };
 
 /// Runs the advancement of every pair of `pairs`, all of shape `shape`, against the
 /// distance `h` (> 0) until it stops: a call returns 1 or more, or returns its start at the
-/// first call, or clears less than `narrowest`, or `max_steps` calls have been made. The
-/// results do not depend on the processor's vector width.
-void advance_pairs(std::span<PairAdvance> pairs, PairShape shape, double h, int max_steps);
+/// first call, or clears less than `narrowest`, or `max_steps` calls have been made; then
+/// the witness against `witness_reach` after each stop on a short advance. The results do
+/// not depend on the processor's vector width.
+void advance_pairs(std::span<PairAdvance> pairs, PairShape shape, double h, double witness_reach,
+                   int max_steps);
 
 namespace detail {
 /// advance_pairs with two lanes per vector (SSE2, any x86-64 processor); exposed so that a
 /// test can check that every build agrees.
 void advance_pairs_two_lanes(std::span<PairAdvance> pairs, PairShape shape, double h,
-                             int max_steps);
+                             double witness_reach, int max_steps);
 }  // namespace detail
 
 }  // namespace tailor

@@ -128,6 +128,11 @@ struct AdvanceStart {
   bool has_next = false;  // call `step` has been made
 };
 
+/// The witness's reach against the widened h: h (1 + 0.9e-6) ≤ h √(1 + 2e-6).
+double widened_witness_reach(double h) {
+  return h * (1 + 0.9e-6);
+}
+
 /// Which distance a decision at one time is against: h, or h √(1 + 2e-6) ≤ (1 + 1e-6) h
 /// (the narrowest intervals' midpoints).
 enum class Reach { h, widened };
@@ -269,7 +274,7 @@ class EarliestWithin {
   /// (they enclose them, so a decided answer is the exact one), exact rationals when the
   /// balls cannot decide.
   bool within_at(double t, Reach reach) const {
-    const double witness_h = reach == Reach::h ? h_ : h_ * (1 + 0.9e-6);
+    const double witness_h = reach == Reach::h ? h_ : widened_witness_reach(h_);
     if (within_by_closest_points(m_.x0, m_.x1, t, shape_, witness_h)) return true;
     const Truth near =
         conditions_(BoxedStep{m_, Ball(t)}, reach == Reach::h ? h2_ : widened_h2_, never());
@@ -493,10 +498,14 @@ void batch(std::span<const Query> queries, double h, NormalTest normal_test,
     const Searched& s = searched[j];
     advances[j] = {&s.m.x0, &s.m.x1, &*s.screened.differences, narrowest_interval(h, s.speed)};
   }
-  advance_pairs(advances, kShape, h, kAdvanceSteps);
+  advance_pairs(advances, kShape, h, widened_witness_reach(h), kAdvanceSteps);
   for (std::size_t j = 0; j < searched.size(); ++j) {
     const Searched& s = searched[j];
     const PairAdvance& a = advances[j];
+    if (a.within_after) {  // EarliestWithin::advance's first narrow decision: a hit
+      results[s.query] = {.hit = true, .toi = a.next, .intervals = 2, .exhausted = false};
+      continue;
+    }
     results[s.query] =
         search(s.m, s.screened, kShape, h, s.speed, {a.t, a.step, a.next, a.has_next});
   }
