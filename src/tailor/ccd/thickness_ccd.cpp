@@ -420,36 +420,31 @@ double speed_of(const StepPoints& m, PairShape shape) {
 }
 
 /// The search of a screened pair, its advancement started at `start`.
-ThicknessResult search(const StepPoints& m, const Screened& screened, PairShape shape, double h,
-                       double speed, AdvanceStart start = {}) {
-  if (shape == PairShape::vertex_face) {
-    const auto find_never = [&m] {
-      detail::NeverPresent never;
+template <PairShape kShape>
+ThicknessResult search(const StepPoints& m, const Screened& screened, double h, double speed,
+                       AdvanceStart start = {}) {
+  constexpr bool kVertexFace = kShape == PairShape::vertex_face;
+  const auto find_never = [&m] {
+    detail::NeverPresent never;
+    if constexpr (kVertexFace) {
       never.normal = normal_always_zero(m, {1, 2, 1, 3});
       never.segment = {always_together(m, 1, 2), always_together(m, 2, 3), always_together(m, 3, 1),
                        false};
-      return never;
-    };
-    return earliest_within(
-        m, screened, shape, h, speed, find_never,
-        [](const auto& pts, const auto& h2, const detail::NeverPresent& n) {
-          return detail::vertex_face(pts, h2, n);
-        },
-        start);
-  }
-  const auto find_never = [&m] {
-    detail::NeverPresent never;
-    never.normal = normal_always_zero(m, {0, 1, 2, 3});
-    const bool cd = always_together(m, 2, 3), ab = always_together(m, 0, 1);
-    never.segment = {cd, cd, ab, ab};
+    } else {
+      never.normal = normal_always_zero(m, {0, 1, 2, 3});
+      const bool cd = always_together(m, 2, 3), ab = always_together(m, 0, 1);
+      never.segment = {cd, cd, ab, ab};
+    }
     return never;
   };
-  return earliest_within(
-      m, screened, shape, h, speed, find_never,
-      [](const auto& pts, const auto& h2, const detail::NeverPresent& n) {
-        return detail::edge_edge(pts, h2, n);
-      },
-      start);
+  const auto conditions = [](const auto& pts, const auto& h2, const detail::NeverPresent& n) {
+    if constexpr (kVertexFace) {
+      return detail::vertex_face(pts, h2, n);
+    } else {
+      return detail::edge_edge(pts, h2, n);
+    }
+  };
+  return earliest_within(m, screened, kShape, h, speed, find_never, conditions, start);
 }
 
 template <class Query>
@@ -458,7 +453,7 @@ ThicknessResult one_query(const Query& q, double h, NormalTest normal_test) {
   const StepPoints m = points_of(q, h);
   const Screened screened = screen(m, kShape, h, normal_test);
   if (screened.decided) return *screened.decided;
-  return search(m, screened, kShape, h, speed_of(m, kShape));
+  return search<kShape>(m, screened, h, speed_of(m, kShape));
 }
 
 /// The screening and the pairs that do not move relative to each other one by one; the
@@ -488,7 +483,7 @@ void batch(std::span<const Query> queries, double h, NormalTest normal_test,
     if (screened.decided) {
       results[i] = *screened.decided;
     } else if (speed == 0) {
-      results[i] = search(m, screened, kShape, h, speed);
+      results[i] = search<kShape>(m, screened, h, speed);
     } else {
       searched.push_back({i, m, std::move(screened), speed});
     }
@@ -507,7 +502,7 @@ void batch(std::span<const Query> queries, double h, NormalTest normal_test,
       continue;
     }
     results[s.query] =
-        search(s.m, s.screened, kShape, h, s.speed, {a.t, a.step, a.next, a.has_next});
+        search<kShape>(s.m, s.screened, h, s.speed, {a.t, a.step, a.next, a.has_next});
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 #include "tailor/ccd/thickness_ccd.hpp"
@@ -20,6 +21,21 @@ CcdResult touching_ccd(const VertexFaceQuery& q) {
 }
 CcdResult touching_ccd(const EdgeEdgeQuery& q) {
   return edge_edge_ccd(q);
+}
+
+// The query of a pair at the step from x0 to x1.
+VertexFaceQuery query_of(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
+                         const VertexFacePair& pair) {
+  const auto [v, f] = pair;
+  const Index a = mesh.faces()(f, 0), b = mesh.faces()(f, 1), c = mesh.faces()(f, 2);
+  return {x0.row(v), x0.row(a), x0.row(b), x0.row(c), x1.row(v), x1.row(a), x1.row(b), x1.row(c)};
+}
+EdgeEdgeQuery query_of(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
+                       const EdgeEdgePair& pair) {
+  const auto [e1, e2] = pair;
+  const Index a = mesh.edges()(e1, 0), b = mesh.edges()(e1, 1);
+  const Index c = mesh.edges()(e2, 0), d = mesh.edges()(e2, 1);
+  return {x0.row(a), x0.row(b), x0.row(c), x0.row(d), x1.row(a), x1.row(b), x1.row(c), x1.row(d)};
 }
 
 EdgeEdgeCollision make_edge_edge(const EdgeArray& edges, Index e1, Index e2, double toi) {
@@ -87,81 +103,52 @@ void ExactPairTester::test(const TriangleMesh& mesh, const Positions& x0, const 
   for (std::size_t b = 0; b < edge_edge_blocks.size(); ++b) {
     add_chunks(true, b, edge_edge_blocks[b].size());
   }
-  const FaceArray& faces = mesh.faces();
-  const EdgeArray& edges = mesh.edges();
   tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t k) {
     const Chunk& chunk = chunks[k];
     ThreadOutput& out = m_outputs.local();
-    if (!chunk.edge_edge && m_thickness > 0) {
-      within_thickness(
-          mesh, x0, x1,
-          vertex_face_blocks[chunk.block].subspan(chunk.begin, chunk.end - chunk.begin), out);
-    } else if (!chunk.edge_edge) {
-      const std::span<const VertexFacePair> pairs = vertex_face_blocks[chunk.block];
-      for (std::size_t i = chunk.begin; i < chunk.end; ++i) {
-        const auto [v, f] = pairs[i];
-        const Index a = faces(f, 0), b = faces(f, 1), c = faces(f, 2);
-        const VertexFaceQuery query{x0.row(v), x0.row(a), x0.row(b), x0.row(c),
-                                    x1.row(v), x1.row(a), x1.row(b), x1.row(c)};
-        if (const auto toi = time_of_impact(query, out.exact)) {
-          out.vertex_face.push_back({v, f, *toi});
-        }
+    const auto run = [&](const auto& block) {
+      const auto pairs = block.subspan(chunk.begin, chunk.end - chunk.begin);
+      if (m_thickness > 0) {
+        within_thickness(mesh, x0, x1, pairs, out);
+      } else {
+        touching(mesh, x0, x1, pairs, out);
       }
-    } else if (m_thickness > 0) {
-      within_thickness(mesh, x0, x1,
-                       edge_edge_blocks[chunk.block].subspan(chunk.begin, chunk.end - chunk.begin),
-                       out);
+    };
+    if (chunk.edge_edge) {
+      run(edge_edge_blocks[chunk.block]);
     } else {
-      const std::span<const EdgeEdgePair> pairs = edge_edge_blocks[chunk.block];
-      for (std::size_t i = chunk.begin; i < chunk.end; ++i) {
-        const auto [e1, e2] = pairs[i];
-        const Index a = edges(e1, 0), b = edges(e1, 1);
-        const Index c = edges(e2, 0), d = edges(e2, 1);
-        const EdgeEdgeQuery query{x0.row(a), x0.row(b), x0.row(c), x0.row(d),
-                                  x1.row(a), x1.row(b), x1.row(c), x1.row(d)};
-        if (const auto toi = time_of_impact(query, out.exact))
-          out.edge_edge.push_back({e1, e2, *toi});
-      }
+      run(vertex_face_blocks[chunk.block]);
     }
   });
 }
 
-void ExactPairTester::within_thickness(const TriangleMesh& mesh, const Positions& x0,
-                                       const Positions& x1, std::span<const VertexFacePair> pairs,
-                                       ThreadOutput& out) const {
-  // The whole chunk at once: the advancements run in vector lanes (ccd/advance_lanes.hpp).
-  const FaceArray& faces = mesh.faces();
-  std::vector<VertexFaceQuery>& queries = out.vertex_face_queries;
-  queries.clear();
-  for (const auto [v, f] : pairs) {
-    const Index a = faces(f, 0), b = faces(f, 1), c = faces(f, 2);
-    queries.push_back(
-        {x0.row(v), x0.row(a), x0.row(b), x0.row(c), x1.row(v), x1.row(a), x1.row(b), x1.row(c)});
-  }
-  std::vector<ThicknessResult>& results = out.results;
-  results.resize(pairs.size());
-  vertex_face_ccd_within(queries, m_thickness, m_normal_test, results);
-  for (std::size_t i = 0; i < pairs.size(); ++i) {
-    if (results[i].hit) out.vertex_face.push_back({pairs[i].vertex, pairs[i].face, results[i].toi});
+template <class Pair>
+void ExactPairTester::touching(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
+                               std::span<const Pair> pairs, ThreadOutput& out) const {
+  for (const Pair& pair : pairs) {
+    if (const auto toi = time_of_impact(query_of(mesh, x0, x1, pair), out.exact)) {
+      record(out, pair, *toi);
+    }
   }
 }
 
+template <class Pair>
 void ExactPairTester::within_thickness(const TriangleMesh& mesh, const Positions& x0,
-                                       const Positions& x1, std::span<const EdgeEdgePair> pairs,
+                                       const Positions& x1, std::span<const Pair> pairs,
                                        ThreadOutput& out) const {
-  const EdgeArray& edges = mesh.edges();
-  std::vector<EdgeEdgeQuery>& queries = out.edge_edge_queries;
+  // The whole chunk at once: the advancements run in vector lanes (ccd/advance_lanes.hpp).
+  auto& queries = queries_in(out, pairs);
   queries.clear();
-  for (const auto [e1, e2] : pairs) {
-    const Index a = edges(e1, 0), b = edges(e1, 1), c = edges(e2, 0), d = edges(e2, 1);
-    queries.push_back(
-        {x0.row(a), x0.row(b), x0.row(c), x0.row(d), x1.row(a), x1.row(b), x1.row(c), x1.row(d)});
-  }
+  for (const Pair& pair : pairs) queries.push_back(query_of(mesh, x0, x1, pair));
   std::vector<ThicknessResult>& results = out.results;
   results.resize(pairs.size());
-  edge_edge_ccd_within(queries, m_thickness, m_normal_test, results);
+  if constexpr (std::is_same_v<Pair, VertexFacePair>) {
+    vertex_face_ccd_within(queries, m_thickness, m_normal_test, results);
+  } else {
+    edge_edge_ccd_within(queries, m_thickness, m_normal_test, results);
+  }
   for (std::size_t i = 0; i < pairs.size(); ++i) {
-    if (results[i].hit) out.edge_edge.push_back({pairs[i].edge_a, pairs[i].edge_b, results[i].toi});
+    if (results[i].hit) record(out, pairs[i], results[i].toi);
   }
 }
 

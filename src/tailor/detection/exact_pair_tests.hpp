@@ -81,11 +81,27 @@ class ExactPairTester {
   // the exact path decided in `exact`.
   template <class Query>
   std::optional<double> time_of_impact(const Query& query, std::int64_t& exact) const;
-  // The pairs of one chunk against m_thickness (> 0), together.
+  // The pairs of one chunk, one by one (m_thickness is 0), or together against m_thickness.
+  template <class Pair>
+  void touching(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
+                std::span<const Pair> pairs, ThreadOutput& out) const;
+  template <class Pair>
   void within_thickness(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
-                        std::span<const VertexFacePair> pairs, ThreadOutput& out) const;
-  void within_thickness(const TriangleMesh& mesh, const Positions& x0, const Positions& x1,
-                        std::span<const EdgeEdgePair> pairs, ThreadOutput& out) const;
+                        std::span<const Pair> pairs, ThreadOutput& out) const;
+  // A thread's query vector for a chunk of pairs of that kind, and where a hit goes.
+  static std::vector<VertexFaceQuery>& queries_in(ThreadOutput& out,
+                                                  std::span<const VertexFacePair>) {
+    return out.vertex_face_queries;
+  }
+  static std::vector<EdgeEdgeQuery>& queries_in(ThreadOutput& out, std::span<const EdgeEdgePair>) {
+    return out.edge_edge_queries;
+  }
+  static void record(ThreadOutput& out, const VertexFacePair& pair, double toi) {
+    out.vertex_face.push_back({pair.vertex, pair.face, toi});
+  }
+  static void record(ThreadOutput& out, const EdgeEdgePair& pair, double toi) {
+    out.edge_edge.push_back({pair.edge_a, pair.edge_b, toi});
+  }
 
   tbb::enumerable_thread_specific<ThreadOutput> m_outputs;
   double m_thickness = 0;
