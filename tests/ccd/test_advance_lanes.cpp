@@ -158,9 +158,11 @@ TEST(AdvanceLanes, EveryPairStopsWhereTheScalarLoopStops) {
         }
       }
     }
-    EXPECT_GT(capped, 0);            // some reach the call cap
-    EXPECT_GT(several_calls, 1000);  // lanes refilled while others go on
-    EXPECT_GT(witnessed, 1000);      // the witness pass decides many
+    // Over 18 runs of `count` pairs: some reach the call cap, a good share make several
+    // calls (lanes refilled while others go on), and the witness pass decides many.
+    EXPECT_GT(capped, 0);
+    EXPECT_GT(several_calls, count / 4);
+    EXPECT_GT(witnessed, count / 10);
   }
 }
 

@@ -46,7 +46,7 @@ struct PairAdvance {
 
 /// Runs the advancement of every pair of `pairs`, all of shape `shape`, against the
 /// distance `h` (> 0) until it stops: a call returns 1 or more, or returns its start at the
-/// first call, or clears less than `narrowest`, or `max_steps` calls have been made; then
+/// first call, or clears less than `narrowest`, or `max_steps` (≥ 1) calls have been made; then
 /// the witness against `witness_reach` after each stop on a short advance. The results do
 /// not depend on the processor's vector width.
 void advance_pairs(std::span<PairAdvance> pairs, PairShape shape, double h, double witness_reach,

@@ -392,10 +392,6 @@ double fastest_relative(const StepPoints& m, std::initializer_list<std::pair<int
   return v * (1 + 1e-12);
 }
 
-}  // namespace
-
-namespace {
-
 /// A query's points (PairShape's order), checked.
 StepPoints points_of(const VertexFaceQuery& q, double h) {
   const StepPoints m{{q.p_t0, q.a_t0, q.b_t0, q.c_t0}, {q.p_t1, q.a_t1, q.b_t1, q.c_t1}};
