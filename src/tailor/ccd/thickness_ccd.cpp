@@ -475,10 +475,12 @@ void batch(std::span<const Query> queries, double h, NormalTest normal_test,
   for (std::size_t i = 0; i < queries.size(); ++i) {
     const StepPoints m = points_of(queries[i], h);
     Screened screened = screen(m, kShape, h, normal_test);
-    const double speed = screened.decided ? 0 : speed_of(m, kShape);
     if (screened.decided) {
       results[i] = *screened.decided;
-    } else if (speed == 0) {
+      continue;
+    }
+    const double speed = speed_of(m, kShape);
+    if (speed == 0) {  // one decision, no advancement (EarliestWithin::run)
       results[i] = search<kShape>(m, screened, h, speed);
     } else {
       searched.push_back({i, m, std::move(screened), speed});
